@@ -1,6 +1,160 @@
-//! The `profsubd` command-line tool (under construction).
+//! The `profsubd` command-line tool.
+//!
+//! One clap-derive enum, [`Command`], lists the subcommands; each subcommand's arguments and
+//! logic live in their own file (`src/cli/<name>.rs`) with `pub fn run(args: &XArgs) ->
+//! Result<i32>`. To add a subcommand: a file, a variant here, and an arm in [`dispatch`].
+//! Flags shared by subcommands that take subdivision options are in [`SubdivFlags`].
+//!
+//! Exit codes: 0 success; 1 error (unreadable or invalid input, bad arguments), with the
+//! reason on stderr; subcommands may define more (`check`: 2 for a non-manifold mesh).
+
+pub mod convert;
+
+use std::ffi::OsString;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use crate::error::Result;
+use crate::options::{BoundaryInterpolation, CreaseMethod, PartialOptions, TriangleSubdivision};
+
+/// Profile curves to Catmull-Clark control meshes, and tools for OBJ meshes with
+/// OpenSubdiv tags.
+#[derive(Debug, Parser)]
+#[command(name = "profsubd", version, propagate_version = true)]
+#[command(
+    long_about = "Profile curves to Catmull-Clark control meshes, and tools for \
+    OBJ meshes with OpenSubdiv tags (t crease, t corner, t hole, t interpolateboundary, \
+    t creasemethod, t smoothtriangles; indices 0-based as in OpenSubdiv's shapes)."
+)]
+#[command(after_help = "Exit codes: 0 success, 1 error (reason on stderr), \
+    2 from `check` for a mesh that loads but is not a manifold.")]
+pub struct Cli {
+    /// The subcommand to run.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Rewrite an OBJ mesh: exact coordinates, normalized tags, options overridden.
+    ///
+    /// Reads an OBJ mesh with OpenSubdiv tags and writes it back with every coordinate
+    /// exact (shortest decimals that read back to the same double) and its tags
+    /// normalized (one crease or corner per line). --boundary, --crease and --triangles
+    /// replace the file's interpolateboundary, creasemethod and smoothtriangles tags.
+    /// Tags that are ignored (face-varying, hierarchical edits, unknown) are reported on
+    /// stderr and not written.
+    Convert(convert::ConvertArgs),
+}
+
+/// Subdivision option flags. Given on the command line they override the tags of the mesh
+/// file, which override the defaults (edge-and-corner, uniform, catmark).
+#[derive(Debug, Clone, Default, Args)]
+pub struct SubdivFlags {
+    /// Boundary interpolation; overrides the file's `interpolateboundary` tag
+    /// [default without either: edge-and-corner].
+    #[arg(long, value_enum, value_name = "RULE")]
+    pub boundary: Option<BoundaryArg>,
+    /// Crease sharpness decay; overrides the file's `creasemethod` tag
+    /// [default without either: uniform].
+    #[arg(long, value_enum, value_name = "METHOD")]
+    pub crease: Option<CreaseArg>,
+    /// Rule for triangles; overrides the file's `smoothtriangles` tag
+    /// [default without either: catmark].
+    #[arg(long, value_enum, value_name = "RULE")]
+    pub triangles: Option<TrianglesArg>,
+}
+
+impl SubdivFlags {
+    /// The options given on the command line; unset where no flag was given.
+    pub fn partial(&self) -> PartialOptions {
+        PartialOptions {
+            boundary: self.boundary.map(|b| match b {
+                BoundaryArg::None => BoundaryInterpolation::None,
+                BoundaryArg::EdgeOnly => BoundaryInterpolation::EdgeOnly,
+                BoundaryArg::EdgeAndCorner => BoundaryInterpolation::EdgeAndCorner,
+            }),
+            crease_method: self.crease.map(|c| match c {
+                CreaseArg::Uniform => CreaseMethod::Uniform,
+                CreaseArg::Chaikin => CreaseMethod::Chaikin,
+            }),
+            triangles: self.triangles.map(|t| match t {
+                TrianglesArg::Catmark => TriangleSubdivision::Catmark,
+                TrianglesArg::Smooth => TriangleSubdivision::Smooth,
+            }),
+        }
+    }
+}
+
+/// `--boundary` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum BoundaryArg {
+    /// Boundary faces have no limit surface.
+    None,
+    /// Boundary edges are infinitely sharp.
+    EdgeOnly,
+    /// Boundary edges are sharp and corners with one face too.
+    EdgeAndCorner,
+}
+
+/// `--crease` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CreaseArg {
+    /// Sharpness decreases by 1 per level.
+    Uniform,
+    /// Chaikin's rule averages neighbouring sharpness.
+    Chaikin,
+}
+
+/// `--triangles` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TrianglesArg {
+    /// Catmull-Clark weights on triangles too.
+    Catmark,
+    /// Smoother weights for triangles.
+    Smooth,
+}
 
 /// Run the CLI with the process arguments; returns the exit code.
 pub fn main() -> i32 {
-    0
+    run_from(std::env::args_os())
+}
+
+/// Run the CLI with the given arguments (the first is the program name); returns the exit
+/// code. Errors are printed to stderr as `profsubd: error: ...`.
+pub fn run_from<I, T>(args: I) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => {
+            // --help and --version are "errors" to clap that go to stdout with code 0.
+            let _ = e.print();
+            return if e.use_stderr() { 1 } else { 0 };
+        }
+    };
+    match dispatch(&cli.command) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("profsubd: error: {e}");
+            1
+        }
+    }
+}
+
+/// Run one subcommand.
+pub fn dispatch(command: &Command) -> Result<i32> {
+    match command {
+        Command::Convert(args) => convert::run(args),
+    }
+}
+
+/// Print reader warnings to stderr, one per line.
+pub(crate) fn print_warnings(warnings: &[String]) {
+    for w in warnings {
+        eprintln!("profsubd: warning: {w}");
+    }
 }

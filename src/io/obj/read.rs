@@ -283,13 +283,15 @@ impl<'a> Reader<'a> {
             .unwrap_or_default();
         let (ni, nf, ns) = match counts.as_deref() {
             Some(&[ni, nf, ns]) => (ni, nf, ns),
-            _ => return Err(self.error(
-                n,
-                format!(
+            _ => {
+                return Err(self.error(
+                    n,
+                    format!(
                     "expected argument counts `ints/floats/strings` after `t {name}`, found `{}`",
                     args.first().copied().unwrap_or("")
                 ),
-            )),
+                ))
+            }
         };
         let values = &args[1..];
         if values.len() != ni.saturating_add(nf).saturating_add(ns) {

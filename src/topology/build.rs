@@ -1,0 +1,330 @@
+//! Building the base [`Level`] from a [`Mesh`], as OpenSubdiv's
+//! `Far::TopologyRefinerFactory<TopologyDescriptor>` does: edges from face vertices
+//! (`Vtr::Level::completeTopologyFromFaceVertices`), non-manifold detection, counter-clockwise
+//! ordering around manifold vertices, local indices, then tags and sharpness under the
+//! boundary rule.
+
+use super::level::{find_edge_in, Level};
+use crate::catmark::boundary;
+use crate::catmark::crease::{is_sharp, vertex_rule};
+use crate::mesh::Mesh;
+use crate::options::SubdivOptions;
+
+/// Incidence lists grown one member at a time, flattened at the end.
+struct Lists(Vec<Vec<u32>>);
+
+impl Lists {
+    fn flatten(self) -> (Vec<u32>, Vec<u32>) {
+        let mut offsets = Vec::with_capacity(self.0.len() + 1);
+        let total = self.0.iter().map(Vec::len).sum();
+        let mut flat = Vec::with_capacity(total);
+        offsets.push(0);
+        for l in self.0 {
+            flat.extend_from_slice(&l);
+            offsets.push(flat.len() as u32);
+        }
+        (offsets, flat)
+    }
+}
+
+impl Level {
+    /// The base level of `mesh` under the options the mesh carries (file tags, defaults for
+    /// the rest).
+    pub fn from_mesh(mesh: &Mesh) -> Level {
+        Level::from_mesh_with_options(mesh, &mesh.options().resolve())
+    }
+
+    /// The base level of `mesh` under `options` (which decide the boundary sharpening).
+    pub fn from_mesh_with_options(mesh: &Mesh, options: &SubdivOptions) -> Level {
+        let mut level = topology_from_face_vertices(mesh, *options);
+        level.assign_tags_and_sharpness(mesh);
+        level
+    }
+
+    /// `Vtr::Level::orderVertexFacesAndEdges`: the faces and edges around `v` in
+    /// counter-clockwise order, or `None` if they do not form a single fan.
+    fn ordered_faces_and_edges(&self, v: usize) -> Option<(Vec<u32>, Vec<u32>)> {
+        let v_edges = self.vertex_edges(v);
+        let v_faces = self.vertex_faces(v);
+        let (fc, ec) = (v_faces.len(), v_edges.len());
+        if fc == 0 || ec < 2 || ec > fc + 1 {
+            return None;
+        }
+        let pos = |s: &[u32], x: u32| s.iter().position(|&y| y == x);
+        let (mut f_start, mut e_start, mut fv_start);
+        if ec == fc {
+            f_start = v_faces[0];
+            fv_start = pos(self.face_vertices(f_start as usize), v as u32)?;
+            e_start = self.face_edges(f_start as usize)[fv_start];
+        } else {
+            let mut found = None;
+            for &e in v_edges {
+                let ef = self.edge_faces(e as usize);
+                if ef.len() == 1 {
+                    let f = ef[0];
+                    let fv = pos(self.face_vertices(f as usize), v as u32)?;
+                    found = Some((f, e, fv));
+                    // The leading boundary edge is the one that starts at `v` in its face.
+                    if e == self.face_edges(f as usize)[fv] {
+                        break;
+                    }
+                }
+            }
+            (f_start, e_start, fv_start) = found?;
+        }
+        let mut faces = Vec::with_capacity(fc);
+        let mut edges = Vec::with_capacity(ec);
+        faces.push(f_start);
+        edges.push(e_start);
+        let e_first = e_start;
+        while edges.len() < ec {
+            let f_edges = self.face_edges(f_start as usize);
+            let fe_next = if fv_start > 0 {
+                fv_start - 1
+            } else {
+                f_edges.len() - 1
+            };
+            let e_next = f_edges[fe_next];
+            if e_next == e_start || e_next == e_first {
+                return None;
+            }
+            edges.push(e_next);
+            if faces.len() < fc {
+                let ef = self.edge_faces(e_next as usize);
+                if ef.is_empty() || (ef.len() == 1 && ef[0] == f_start) {
+                    return None;
+                }
+                f_start = if ef[0] == f_start { ef[1] } else { ef[0] };
+                fv_start = pos(self.face_edges(f_start as usize), e_next)?;
+                faces.push(f_start);
+            }
+            e_start = e_next;
+        }
+        Some((faces, edges))
+    }
+
+    /// `Vtr::Level::populateLocalIndices`.
+    fn populate_local_indices(&mut self) {
+        let vf_locals = positions_in_parents(&self.vert_face_offsets, &self.vert_faces, |f| {
+            self.face_vertices(f)
+        });
+        let mut ve_locals = vec![0u32; self.vert_edges.len()];
+        for v in 0..self.num_vertices() {
+            let r = self.vert_edge_offsets[v] as usize..self.vert_edge_offsets[v + 1] as usize;
+            let first = r.start;
+            for i in r {
+                let e = self.vert_edges[i];
+                let [a, b] = self.edge_verts[e as usize];
+                ve_locals[i] = if a != b {
+                    (v as u32 == b) as u32
+                } else {
+                    (i > first && self.vert_edges[i - 1] == e) as u32
+                };
+            }
+        }
+        let ef_locals = positions_in_parents(&self.edge_face_offsets, &self.edge_faces, |f| {
+            self.face_edges(f)
+        });
+        self.vert_face_locals = vf_locals;
+        self.vert_edge_locals = ve_locals;
+        self.edge_face_locals = ef_locals;
+    }
+
+    /// Mesh tags, then Far's boundary and non-manifold sharpening, holes and vertex rules.
+    fn assign_tags_and_sharpness(&mut self, mesh: &Mesh) {
+        for c in mesh.creases() {
+            let [a, b] = c.vertices;
+            if let Some(e) = self.find_edge(a as usize, b as usize) {
+                self.edge_sharpness[e as usize] = c.sharpness;
+            }
+        }
+        for c in mesh.corners() {
+            self.vert_sharpness[c.vertex as usize] = c.sharpness;
+        }
+        for &h in mesh.holes() {
+            self.face_holes[h as usize] = true;
+        }
+        let rule = self.options.boundary;
+        // Holes from boundary interpolation "none" look at the tagged sharpness, before the
+        // boundary edges are sharpened.
+        for v in 0..self.num_vertices() {
+            let topo = self.vertex_topology(v);
+            let tags = self
+                .vertex_edges(v)
+                .iter()
+                .filter(|&&e| self.edge_faces(e as usize).len() == 1)
+                .map(|&e| self.edge_sharpness[e as usize]);
+            if boundary::faces_become_holes(rule, &topo, tags) {
+                for i in self.vert_face_offsets[v]..self.vert_face_offsets[v + 1] {
+                    let f = self.vert_faces[i as usize];
+                    self.face_holes[f as usize] = true;
+                }
+            }
+        }
+        for e in 0..self.num_edges() {
+            self.edge_sharpness[e] = boundary::edge_sharpness(
+                self.edge_sharpness[e],
+                self.is_edge_boundary(e),
+                self.edge_non_manifold[e],
+            );
+        }
+        for v in 0..self.num_vertices() {
+            let topo = self.vertex_topology(v);
+            self.vert_sharpness[v] =
+                boundary::vertex_sharpness(self.vert_sharpness[v], &topo, rule);
+        }
+        self.update_vertex_rules();
+    }
+
+    /// Rule of every vertex from its sharpness and the number of sharp incident edges.
+    pub(crate) fn update_vertex_rules(&mut self) {
+        self.vert_rules = (0..self.num_vertices())
+            .map(|v| {
+                let sharp = self
+                    .vertex_edges(v)
+                    .iter()
+                    .filter(|&&e| is_sharp(self.edge_sharpness[e as usize]))
+                    .count();
+                vertex_rule(self.vert_sharpness[v], sharp)
+            })
+            .collect();
+    }
+}
+
+/// `Vtr::Level::completeTopologyFromFaceVertices`, then orientation and local indices.
+fn topology_from_face_vertices(mesh: &Mesh, options: SubdivOptions) -> Level {
+    let nv = mesh.num_vertices();
+    let nf = mesh.num_faces();
+    let face_offsets = mesh.face_offsets().to_vec();
+    let face_verts = mesh.face_indices().to_vec();
+    let mut face_edges = vec![0u32; face_verts.len()];
+    let mut edge_verts: Vec<[u32; 2]> = Vec::with_capacity(2 * nv);
+    let mut edge_faces: Vec<Vec<u32>> = Vec::with_capacity(2 * nv);
+    let mut vert_faces: Vec<Vec<u32>> = vec![Vec::new(); nv];
+    let mut vert_edges: Vec<Vec<u32>> = vec![Vec::new(); nv];
+    let mut non_manifold_edges: Vec<u32> = Vec::new();
+
+    for f in 0..nf {
+        let (start, end) = (face_offsets[f] as usize, face_offsets[f + 1] as usize);
+        let n = end - start;
+        for i in 0..n {
+            let v0 = face_verts[start + i];
+            let v1 = face_verts[start + (i + 1) % n];
+            let mut edge = None;
+            if v0 != v1 {
+                edge = find_edge_in(&edge_verts, &vert_edges[v0 as usize], v0, v1);
+            } else {
+                non_manifold_edges.push(edge_verts.len() as u32);
+            }
+            if let Some(e) = edge {
+                let ef = &edge_faces[e as usize];
+                if *ef.last().expect("an existing edge has a face") == f as u32 {
+                    // The edge is already in this face: a new instance.
+                    non_manifold_edges.push(e);
+                    non_manifold_edges.push(edge_verts.len() as u32);
+                    edge = None;
+                } else if ef.len() > 1 || v0 == edge_verts[e as usize][0] {
+                    // A third face, or a second face with the same direction.
+                    non_manifold_edges.push(e);
+                }
+            }
+            let e = match edge {
+                Some(e) => e,
+                None => {
+                    let e = edge_verts.len() as u32;
+                    edge_verts.push([v0, v1]);
+                    edge_faces.push(Vec::with_capacity(2));
+                    vert_edges[v0 as usize].push(e);
+                    vert_edges[v1 as usize].push(e);
+                    e
+                }
+            };
+            edge_faces[e as usize].push(f as u32);
+            vert_faces[v0 as usize].push(f as u32);
+            face_edges[start + i] = e;
+        }
+    }
+    let ne = edge_verts.len();
+    let (edge_face_offsets, edge_faces) = Lists(edge_faces).flatten();
+    let (vert_face_offsets, vert_faces) = Lists(vert_faces).flatten();
+    let (vert_edge_offsets, vert_edges) = Lists(vert_edges).flatten();
+    let mut edge_non_manifold = vec![false; ne];
+    let mut vert_non_manifold = vec![false; nv];
+    for &e in &non_manifold_edges {
+        edge_non_manifold[e as usize] = true;
+        let [a, b] = edge_verts[e as usize];
+        vert_non_manifold[a as usize] = true;
+        vert_non_manifold[b as usize] = true;
+    }
+    let mut level = Level {
+        options,
+        depth: 0,
+        face_offsets,
+        face_verts,
+        face_edges,
+        face_holes: vec![false; nf],
+        edge_verts,
+        edge_face_offsets,
+        edge_faces,
+        edge_face_locals: Vec::new(),
+        edge_non_manifold,
+        edge_sharpness: vec![0.0; ne],
+        vert_face_offsets,
+        vert_faces,
+        vert_face_locals: Vec::new(),
+        vert_edge_offsets,
+        vert_edges,
+        vert_edge_locals: Vec::new(),
+        vert_non_manifold,
+        vert_sharpness: vec![0.0; nv],
+        vert_rules: Vec::new(),
+    };
+    for v in 0..nv {
+        if level.vert_non_manifold[v] {
+            continue;
+        }
+        match level.ordered_faces_and_edges(v) {
+            Some((faces, edges)) => {
+                let fr =
+                    level.vert_face_offsets[v] as usize..level.vert_face_offsets[v + 1] as usize;
+                level.vert_faces[fr].copy_from_slice(&faces);
+                let er =
+                    level.vert_edge_offsets[v] as usize..level.vert_edge_offsets[v + 1] as usize;
+                level.vert_edges[er].copy_from_slice(&edges);
+            }
+            None => level.vert_non_manifold[v] = true,
+        }
+    }
+    level.populate_local_indices();
+    level
+}
+
+/// For each component `c` (rows of `offsets`/`members`) and each face `f` listed for it, the
+/// position of `c` in `items(f)`. A face listed twice in a row uses the component twice: the
+/// search continues past the previous position.
+fn positions_in_parents<'a>(
+    offsets: &[u32],
+    members: &[u32],
+    items: impl Fn(usize) -> &'a [u32],
+) -> Vec<u32> {
+    let mut locals = vec![0u32; members.len()];
+    for c in 0..offsets.len() - 1 {
+        let mut last: Option<u32> = None;
+        for i in offsets[c] as usize..offsets[c + 1] as usize {
+            let f = members[i];
+            let start = if last == Some(f) {
+                locals[i - 1] as usize + 1
+            } else {
+                0
+            };
+            let list = items(f as usize);
+            let at = list[start..]
+                .iter()
+                .position(|&x| x as usize == c)
+                .map_or(list.len(), |p| p + start);
+            locals[i] = at as u32;
+            last = Some(f);
+        }
+    }
+    locals
+}

@@ -1,1 +1,84 @@
-//! (module under construction)
+//! Uniform Catmull-Clark refinement in OpenSubdiv Far's component order.
+//!
+//! [`refine_uniform`] refines a [`Mesh`] `n` times and returns the refined mesh: positions
+//! equal to `Far::TopologyRefiner::RefineUniform` + `Far::PrimvarRefinerReal<double>::Interpolate`
+//! index by index (same arithmetic, same order of operations, sharpness in `f32`), faces in
+//! Far's order, and the decayed crease and corner sharpness as tags.
+//!
+//! The step API underneath serves the evaluators: [`step::refine`] refines a
+//! [`Level`] once (topology, sharpness, rules), and [`primvar::interpolate`] carries any
+//! [`Primvar`] through that step — positions ([`glam::DVec3`]) or [`SparseStencil`]s, so that
+//! a local neighbourhood can be refined as weights on the base vertices.
+
+mod output;
+pub mod primvar;
+pub mod step;
+#[cfg(test)]
+mod tests;
+
+use glam::DVec3;
+
+pub use primvar::{interpolate, Primvar, SparseStencil};
+pub use step::{refine, Refinement, VertexOrder};
+
+use crate::error::{Error, Result};
+use crate::mesh::{Mesh, MAX_COMPONENTS};
+use crate::options::SubdivOptions;
+use crate::topology::Level;
+
+/// Highest refinement level accepted: each level multiplies the face count by about 4, so
+/// level 10 turns a single quad into a million faces.
+pub const MAX_LEVEL: u32 = 10;
+
+/// Refine `mesh` uniformly `level` times under `options`, child vertices in Far's default
+/// order (children of vertices, then of faces, then of edges).
+///
+/// Level 0 returns the mesh with the options attached. Errors: [`Error::InvalidArgument`]
+/// if `level` exceeds [`MAX_LEVEL`] or the refined mesh would exceed
+/// [`MAX_COMPONENTS`] face-vertex indices.
+pub fn refine_uniform(mesh: &Mesh, options: &SubdivOptions, level: u32) -> Result<Mesh> {
+    refine_uniform_ordered(mesh, options, level, VertexOrder::VerticesFirst)
+}
+
+/// [`refine_uniform`] with a choice of child vertex order.
+pub fn refine_uniform_ordered(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    level: u32,
+    order: VertexOrder,
+) -> Result<Mesh> {
+    let (top, positions) = refine_levels(mesh, options, level, order)?;
+    output::to_mesh(&top, positions)
+}
+
+/// Refine `mesh` `level` times and return the last level with its vertex positions.
+///
+/// Errors as [`refine_uniform`].
+pub fn refine_levels(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    level: u32,
+    order: VertexOrder,
+) -> Result<(Level, Vec<DVec3>)> {
+    if level > MAX_LEVEL {
+        return Err(Error::invalid_argument(format!(
+            "refinement level {level} is above the maximum {MAX_LEVEL}"
+        )));
+    }
+    // Each level makes 4 face-vertex indices per parent face-vertex.
+    let indices = mesh.face_indices().len() as f64 * 4f64.powi(level as i32);
+    if indices > MAX_COMPONENTS as f64 {
+        return Err(Error::invalid_argument(format!(
+            "refining {} face indices {level} times would give {indices:.0}, above the limit {MAX_COMPONENTS}",
+            mesh.face_indices().len()
+        )));
+    }
+    let mut current = Level::from_mesh_with_options(mesh, options);
+    let mut positions = mesh.positions().to_vec();
+    for _ in 0..level {
+        let r = refine(&current, order);
+        positions = interpolate(&current, &r, &positions);
+        current = r.child;
+    }
+    Ok((current, positions))
+}

@@ -1,0 +1,179 @@
+//! Interpolation of vertex data through one refinement step, with OpenSubdiv's arithmetic
+//! (`Far::PrimvarRefinerReal<double>::Interpolate`): face points, then edge points (which use
+//! the new face points), then vertex points (face points, then the vertices across the
+//! incident edges, then the vertex itself), each a weighted sum accumulated in that order.
+
+use glam::DVec3;
+
+use super::step::Refinement;
+use crate::catmark::masks::{
+    face_point_weight, EdgeMask, EdgeNeighbourhood, VertexMask, VertexMaskBuilder,
+    VertexNeighbourhood,
+};
+use crate::catmark::Rule;
+use crate::topology::Level;
+
+/// Vertex data that can be refined: a value that starts at zero and accumulates weighted
+/// copies of other values (`Clear` and `AddWithWeight` in OpenSubdiv).
+pub trait Primvar: Sized {
+    /// The zero value.
+    fn zero() -> Self;
+    /// `self += weight * src`.
+    fn add_weighted(&mut self, src: &Self, weight: f64);
+}
+
+impl Primvar for DVec3 {
+    fn zero() -> Self {
+        DVec3::ZERO
+    }
+    fn add_weighted(&mut self, src: &Self, weight: f64) {
+        // Component by component, product then sum: the same rounding as OpenSubdiv's
+        // `_p[i] += src._p[i] * weight`.
+        *self += *src * weight;
+    }
+}
+
+impl Primvar for f64 {
+    fn zero() -> Self {
+        0.0
+    }
+    fn add_weighted(&mut self, src: &Self, weight: f64) {
+        *self += *src * weight;
+    }
+}
+
+/// A sparse linear combination of base-level values: `(index, weight)` pairs, one per index.
+///
+/// Refining the unit stencils of the base vertices gives, for every refined vertex, its
+/// weights on the base vertices; applying them to positions gives the refined positions up to
+/// rounding.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SparseStencil {
+    /// `(base index, weight)` pairs, each index at most once, in order of first appearance.
+    pub entries: Vec<(u32, f64)>,
+}
+
+impl SparseStencil {
+    /// The stencil that selects base value `index`.
+    pub fn unit(index: u32) -> SparseStencil {
+        SparseStencil {
+            entries: vec![(index, 1.0)],
+        }
+    }
+
+    /// Apply to base values.
+    pub fn apply<T: Primvar>(&self, values: &[T]) -> T {
+        let mut out = T::zero();
+        for &(i, w) in &self.entries {
+            out.add_weighted(&values[i as usize], w);
+        }
+        out
+    }
+}
+
+impl Primvar for SparseStencil {
+    fn zero() -> Self {
+        SparseStencil::default()
+    }
+    fn add_weighted(&mut self, src: &Self, weight: f64) {
+        if weight == 0.0 {
+            return;
+        }
+        for &(i, w) in &src.entries {
+            match self.entries.iter_mut().find(|(j, _)| *j == i) {
+                Some((_, acc)) => *acc += w * weight,
+                None => self.entries.push((i, w * weight)),
+            }
+        }
+    }
+}
+
+/// Values of the child vertices of `r` from the values `src` of the parent level's vertices.
+///
+/// Panics if `src` has fewer values than `parent` has vertices.
+pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec<T> {
+    assert!(src.len() >= parent.num_vertices());
+    let child = &r.child;
+    let mut dst: Vec<T> = (0..child.num_vertices()).map(|_| T::zero()).collect();
+    let options = parent.options();
+
+    for f in 0..parent.num_faces() {
+        let fv = parent.face_vertices(f);
+        let w = face_point_weight(fv.len());
+        let mut acc = T::zero();
+        for &v in fv {
+            acc.add_weighted(&src[v as usize], w);
+        }
+        dst[r.face_child_vertex(f) as usize] = acc;
+    }
+
+    let mut emask = EdgeMask::default();
+    for e in 0..parent.num_edges() {
+        let ev = parent.edge_vertices(e);
+        let ef = parent.edge_faces(e);
+        let cv = r.edge_child_vertex(e) as usize;
+        let mut tri = [false; 2];
+        if ef.len() == 2 {
+            for (t, &f) in tri.iter_mut().zip(ef) {
+                *t = parent.face_vertices(f as usize).len() == 3;
+            }
+        }
+        let hood = EdgeNeighbourhood {
+            sharpness: parent.edge_sharpness(e),
+            num_faces: ef.len(),
+            faces_are_triangles: tri,
+        };
+        emask.compute(
+            &hood,
+            Some(child.vertex_rule(cv)),
+            options.crease_method,
+            options.triangles,
+        );
+        let mut acc = T::zero();
+        acc.add_weighted(&src[ev[0] as usize], emask.vertices[0]);
+        acc.add_weighted(&src[ev[1] as usize], emask.vertices[1]);
+        for (&f, &w) in ef.iter().zip(&emask.faces) {
+            acc.add_weighted(&dst[r.face_child_vertex(f as usize) as usize], w);
+        }
+        dst[cv] = acc;
+    }
+
+    let mut builder = VertexMaskBuilder::default();
+    let mut vmask = VertexMask::default();
+    let mut edge_sharpness: Vec<f32> = Vec::new();
+    for v in 0..parent.num_vertices() {
+        let cv = r.vertex_child_vertex(v) as usize;
+        let ve = parent.vertex_edges(v);
+        let vf = parent.vertex_faces(v);
+        let p_rule = parent.vertex_rule(v);
+        edge_sharpness.clear();
+        if !matches!(p_rule, Rule::Smooth | Rule::Dart) {
+            edge_sharpness.extend(ve.iter().map(|&e| parent.edge_sharpness(e as usize)));
+        }
+        let hood = VertexNeighbourhood {
+            num_faces: vf.len(),
+            sharpness: parent.vertex_sharpness(v),
+            child_sharpness: child.vertex_sharpness(cv),
+            edge_sharpness: &edge_sharpness,
+        };
+        builder.compute(
+            &hood,
+            p_rule,
+            child.vertex_rule(cv),
+            options.crease_method,
+            &mut vmask,
+        );
+        let mut acc = T::zero();
+        for (&f, &w) in vf.iter().zip(&vmask.faces) {
+            acc.add_weighted(&dst[r.face_child_vertex(f as usize) as usize], w);
+        }
+        for (&e, &w) in ve.iter().zip(&vmask.edges) {
+            let [a, b] = parent.edge_vertices(e as usize);
+            let across = if a as usize == v { b } else { a };
+            acc.add_weighted(&src[across as usize], w);
+        }
+        acc.add_weighted(&src[v], vmask.vertex);
+        dst[cv] = acc;
+    }
+    dst
+}

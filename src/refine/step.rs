@@ -1,0 +1,457 @@
+//! One level of uniform Catmull-Clark refinement of the topology and sharpness
+//! (`Vtr::internal::QuadRefinement` + `Vtr::internal::Refinement`).
+//!
+//! Child components and their order:
+//! - faces: one quad per parent face-vertex, parent face after parent face (child `j` of face
+//!   `f` holds the corner at face vertex `j`);
+//! - edges: first one per parent face-vertex (from the face point to the edge point of face
+//!   edge `j`), then two per parent edge (child `j` ends at the child of edge vertex `j`);
+//! - vertices: children of parent vertices, then of faces, then of edges
+//!   ([`VertexOrder::VerticesFirst`], Far's default), or faces, edges, vertices
+//!   ([`VertexOrder::FacesFirst`], Far's `orderVerticesFromFacesFirst`).
+//!
+//! The child's incidence lists are filled in Vtr's order, which fixes the order in which
+//! later levels sum their weights.
+
+use super::super::topology::Level;
+use crate::catmark::crease::{
+    is_infinite, is_semi_sharp, subdivide_edge_sharpness_at_vertex, subdivide_vertex_sharpness,
+    SHARPNESS_INFINITE,
+};
+
+/// Order of the child vertices in a refined level.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum VertexOrder {
+    /// Children of vertices, then of faces, then of edges (Far's default).
+    #[default]
+    VerticesFirst,
+    /// Children of faces, then of edges, then of vertices.
+    FacesFirst,
+}
+
+/// A parent level refined once: the child [`Level`] and the parent-to-child index maps.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Refinement {
+    /// The refined level.
+    pub child: Level,
+    order: VertexOrder,
+    parent_counts: [u32; 4],
+}
+
+impl Refinement {
+    /// The vertex order of the child.
+    pub fn order(&self) -> VertexOrder {
+        self.order
+    }
+    fn first_from_vertices(&self) -> u32 {
+        let [_, nf, ne, _] = self.parent_counts;
+        match self.order {
+            VertexOrder::VerticesFirst => 0,
+            VertexOrder::FacesFirst => nf + ne,
+        }
+    }
+    fn first_from_faces(&self) -> u32 {
+        match self.order {
+            VertexOrder::VerticesFirst => self.parent_counts[0],
+            VertexOrder::FacesFirst => 0,
+        }
+    }
+    fn first_from_edges(&self) -> u32 {
+        let [nv, nf, _, _] = self.parent_counts;
+        match self.order {
+            VertexOrder::VerticesFirst => nv + nf,
+            VertexOrder::FacesFirst => nf,
+        }
+    }
+    /// Child vertex of parent vertex `v`.
+    pub fn vertex_child_vertex(&self, v: usize) -> u32 {
+        self.first_from_vertices() + v as u32
+    }
+    /// Child vertex (face point) of parent face `f`.
+    pub fn face_child_vertex(&self, f: usize) -> u32 {
+        self.first_from_faces() + f as u32
+    }
+    /// Child vertex (edge point) of parent edge `e`.
+    pub fn edge_child_vertex(&self, e: usize) -> u32 {
+        self.first_from_edges() + e as u32
+    }
+    /// Child face `j` of parent face `f` (the quad at its face vertex `j`), given `f`'s
+    /// offset in the parent's face-vertex array.
+    pub fn face_child_face(parent: &Level, f: usize, j: usize) -> u32 {
+        (parent.face_offset(f) + j) as u32
+    }
+    /// Child edge `j` of parent edge `e` (the half at edge vertex `j`).
+    pub fn edge_child_edge(&self, e: usize, j: usize) -> u32 {
+        self.parent_counts[3] + 2 * e as u32 + j as u32
+    }
+}
+
+/// Rows of an incidence relation with local indices, appended one row at a time.
+#[derive(Default)]
+struct Rows {
+    offsets: Vec<u32>,
+    members: Vec<u32>,
+    locals: Vec<u32>,
+}
+
+impl Rows {
+    fn with_capacity(rows: usize, members: usize) -> Rows {
+        let mut offsets = Vec::with_capacity(rows + 1);
+        offsets.push(0);
+        Rows {
+            offsets,
+            members: Vec::with_capacity(members),
+            locals: Vec::with_capacity(members),
+        }
+    }
+    fn push(&mut self, member: u32, local: u32) {
+        self.members.push(member);
+        self.locals.push(local);
+    }
+    fn end_row(&mut self) {
+        self.offsets.push(self.members.len() as u32);
+    }
+}
+
+/// Refine `parent` once (uniformly), with child vertices in `order`.
+pub fn refine(parent: &Level, order: VertexOrder) -> Refinement {
+    let nv = parent.num_vertices();
+    let nf = parent.num_faces();
+    let ne = parent.num_edges();
+    let nfv = parent.num_face_vertices_total();
+    let mut r = Refinement {
+        child: Level {
+            options: parent.options,
+            depth: parent.depth + 1,
+            face_offsets: Vec::new(),
+            face_verts: Vec::new(),
+            face_edges: Vec::new(),
+            face_holes: Vec::new(),
+            edge_verts: Vec::new(),
+            edge_face_offsets: Vec::new(),
+            edge_faces: Vec::new(),
+            edge_face_locals: Vec::new(),
+            edge_non_manifold: Vec::new(),
+            edge_sharpness: Vec::new(),
+            vert_face_offsets: Vec::new(),
+            vert_faces: Vec::new(),
+            vert_face_locals: Vec::new(),
+            vert_edge_offsets: Vec::new(),
+            vert_edges: Vec::new(),
+            vert_edge_locals: Vec::new(),
+            vert_non_manifold: Vec::new(),
+            vert_sharpness: Vec::new(),
+            vert_rules: Vec::new(),
+        },
+        order,
+        parent_counts: [nv as u32, nf as u32, ne as u32, nfv as u32],
+    };
+    let child = build_faces(parent, &r);
+    r.child.face_offsets = child.0;
+    r.child.face_verts = child.1;
+    r.child.face_edges = child.2;
+    r.child.face_holes = child.3;
+    build_edges(parent, &mut r);
+    build_vertices(parent, &mut r);
+    r.child.update_vertex_rules();
+    r
+}
+
+type FaceArrays = (Vec<u32>, Vec<u32>, Vec<u32>, Vec<bool>);
+
+/// Child face-vertices and face-edges (`populateFaceVerticesFromParentFaces`,
+/// `populateFaceEdgesFromParentFaces`) and hole tags.
+fn build_faces(parent: &Level, r: &Refinement) -> FaceArrays {
+    let nfv = parent.num_face_vertices_total();
+    let offsets: Vec<u32> = (0..=nfv as u32).map(|i| 4 * i).collect();
+    let mut verts = vec![0u32; 4 * nfv];
+    let mut edges = vec![0u32; 4 * nfv];
+    let mut holes = Vec::with_capacity(nfv);
+    for f in 0..parent.num_faces() {
+        let fv = parent.face_vertices(f);
+        let fe = parent.face_edges(f);
+        let n = fv.len();
+        let base = parent.face_offset(f);
+        let face_point = r.face_child_vertex(f);
+        for j in 0..n {
+            let j_prev = if j > 0 { j - 1 } else { n - 1 };
+            let c = 4 * (base + j);
+            // Order within the child quad: for a parent quad, rotated so that the corner
+            // vertex keeps its position j; otherwise corner first.
+            let slots = if n == 4 {
+                let j_opp = if j_prev > 0 { j_prev - 1 } else { 3 };
+                let j_next = if j_opp > 0 { j_opp - 1 } else { 3 };
+                [j, j_next, j_opp, j_prev]
+            } else {
+                [0, 1, 2, 3]
+            };
+            verts[c + slots[0]] = r.vertex_child_vertex(fv[j] as usize);
+            verts[c + slots[1]] = r.edge_child_vertex(fe[j] as usize);
+            verts[c + slots[2]] = face_point;
+            verts[c + slots[3]] = r.edge_child_vertex(fe[j_prev] as usize);
+
+            let corner = fv[j];
+            let prev = parent.edge_vertices(fe[j_prev] as usize);
+            let next = parent.edge_vertices(fe[j] as usize);
+            let corner_in_prev = if prev[0] != prev[1] {
+                (prev[0] != corner) as usize
+            } else {
+                1
+            };
+            let corner_in_next = if next[0] != next[1] {
+                (next[0] != corner) as usize
+            } else {
+                0
+            };
+            edges[c + slots[0]] = r.edge_child_edge(fe[j] as usize, corner_in_next);
+            edges[c + slots[1]] = (base + j) as u32;
+            edges[c + slots[2]] = (base + j_prev) as u32;
+            edges[c + slots[3]] = r.edge_child_edge(fe[j_prev] as usize, corner_in_prev);
+            holes.push(parent.is_face_hole(f));
+        }
+    }
+    (offsets, verts, edges, holes)
+}
+
+/// Child edge-vertices, edge-faces, non-manifold tags and sharpness.
+fn build_edges(parent: &Level, r: &mut Refinement) {
+    let nfv = parent.num_face_vertices_total();
+    let ne = parent.num_edges();
+    let total = nfv + 2 * ne;
+    let mut edge_verts = Vec::with_capacity(total);
+    let mut faces = Rows::with_capacity(total, 2 * nfv + 2 * parent.edge_faces.len());
+    for f in 0..parent.num_faces() {
+        let fe = parent.face_edges(f);
+        let n = fe.len();
+        for (j, &e) in fe.iter().enumerate() {
+            edge_verts.push([r.face_child_vertex(f), r.edge_child_vertex(e as usize)]);
+            let j_next = if j + 1 < n { j + 1 } else { 0 };
+            let quad = n == 4;
+            faces.push(
+                Refinement::face_child_face(parent, f, j),
+                if quad { j_next as u32 } else { 1 },
+            );
+            faces.push(
+                Refinement::face_child_face(parent, f, j_next),
+                if quad { ((j_next + 2) & 3) as u32 } else { 2 },
+            );
+            faces.end_row();
+        }
+    }
+    let mut sharpness = vec![0.0f32; total];
+    let mut non_manifold = vec![false; total];
+    let method = parent.options.crease_method;
+    let mut around: Vec<f32> = Vec::new();
+    for e in 0..ne {
+        let ev = parent.edge_vertices(e);
+        let ef = parent.edge_faces(e);
+        let el = parent.edge_face_local_indices(e);
+        let p = parent.edge_sharpness(e);
+        for (j, &end) in ev.iter().enumerate() {
+            let c = nfv + 2 * e + j;
+            edge_verts.push([r.edge_child_vertex(e), r.vertex_child_vertex(end as usize)]);
+            for (&pf, &in_face) in ef.iter().zip(el) {
+                let pf = pf as usize;
+                let in_face = in_face as usize;
+                let fv = parent.face_vertices(pf);
+                let child_of_edge = if ev[0] == ev[1] {
+                    j
+                } else {
+                    (fv[in_face] != ev[j]) as usize
+                };
+                let mut child_in_face = in_face + child_of_edge;
+                if child_in_face == fv.len() {
+                    child_in_face = 0;
+                }
+                let local = if fv.len() == 4 {
+                    in_face as u32
+                } else if child_of_edge == 1 {
+                    3
+                } else {
+                    0
+                };
+                faces.push(
+                    Refinement::face_child_face(parent, pf, child_in_face),
+                    local,
+                );
+            }
+            faces.end_row();
+            non_manifold[c] = parent.is_edge_non_manifold(e);
+            sharpness[c] = if is_infinite(p) {
+                SHARPNESS_INFINITE
+            } else if is_semi_sharp(p) {
+                around.clear();
+                around.extend(
+                    parent
+                        .vertex_edges(end as usize)
+                        .iter()
+                        .map(|&x| parent.edge_sharpness(x as usize)),
+                );
+                subdivide_edge_sharpness_at_vertex(method, p, &around)
+            } else {
+                0.0
+            };
+        }
+    }
+    let c = &mut r.child;
+    c.edge_verts = edge_verts;
+    c.edge_face_offsets = faces.offsets;
+    c.edge_faces = faces.members;
+    c.edge_face_locals = faces.locals;
+    c.edge_sharpness = sharpness;
+    c.edge_non_manifold = non_manifold;
+}
+
+/// The three groups of child vertices, in child index order.
+fn groups(order: VertexOrder) -> [u8; 3] {
+    const VERTS: u8 = 0;
+    const FACES: u8 = 1;
+    const EDGES: u8 = 2;
+    match order {
+        VertexOrder::VerticesFirst => [VERTS, FACES, EDGES],
+        VertexOrder::FacesFirst => [FACES, EDGES, VERTS],
+    }
+}
+
+/// Child vertex-faces, vertex-edges, non-manifold tags and sharpness
+/// (`populateVertexFacesFrom*`, `populateVertexEdgesFrom*`, `subdivideVertexSharpness`).
+fn build_vertices(parent: &Level, r: &mut Refinement) {
+    let nv = parent.num_vertices();
+    let nf = parent.num_faces();
+    let ne = parent.num_edges();
+    let total = nv + nf + ne;
+    let nfv = parent.num_face_vertices_total();
+    let mut vfaces = Rows::with_capacity(
+        total,
+        nfv + 2 * parent.edge_faces.len() + parent.vert_faces.len(),
+    );
+    let mut vedges = Rows::with_capacity(
+        total,
+        nfv + parent.edge_faces.len() + 2 * ne + parent.vert_edges.len(),
+    );
+    let mut sharpness = Vec::with_capacity(total);
+    let mut non_manifold = Vec::with_capacity(total);
+    for group in groups(r.order) {
+        match group {
+            0 => {
+                for v in 0..nv {
+                    for (&pf, &k) in parent
+                        .vertex_faces(v)
+                        .iter()
+                        .zip(parent.vertex_face_local_indices(v))
+                    {
+                        let quad = parent.face_vertices(pf as usize).len() == 4;
+                        vfaces.push(
+                            Refinement::face_child_face(parent, pf as usize, k as usize),
+                            if quad { k } else { 0 },
+                        );
+                    }
+                    vfaces.end_row();
+                    for (&pe, &k) in parent
+                        .vertex_edges(v)
+                        .iter()
+                        .zip(parent.vertex_edge_local_indices(v))
+                    {
+                        vedges.push(r.edge_child_edge(pe as usize, k as usize), 1);
+                    }
+                    vedges.end_row();
+                    let s = parent.vertex_sharpness(v);
+                    sharpness.push(if is_infinite(s) {
+                        SHARPNESS_INFINITE
+                    } else if is_semi_sharp(s) {
+                        subdivide_vertex_sharpness(s)
+                    } else {
+                        0.0
+                    });
+                    non_manifold.push(parent.is_vertex_non_manifold(v));
+                }
+            }
+            1 => {
+                for f in 0..nf {
+                    let n = parent.face_vertices(f).len();
+                    for j in 0..n {
+                        let local = if n == 4 { ((j + 2) & 3) as u32 } else { 2 };
+                        vfaces.push(Refinement::face_child_face(parent, f, j), local);
+                    }
+                    vfaces.end_row();
+                    let base = parent.face_offset(f);
+                    for j in 0..n {
+                        let leading = if j > 0 { j - 1 } else { n - 1 };
+                        vedges.push((base + leading) as u32, 0);
+                    }
+                    vedges.end_row();
+                    sharpness.push(0.0);
+                    non_manifold.push(false);
+                }
+            }
+            _ => {
+                for e in 0..ne {
+                    push_edge_vertex_rows(parent, r, e, &mut vfaces, &mut vedges);
+                    sharpness.push(0.0);
+                    non_manifold.push(parent.is_edge_non_manifold(e));
+                }
+            }
+        }
+    }
+    let c = &mut r.child;
+    c.vert_face_offsets = vfaces.offsets;
+    c.vert_faces = vfaces.members;
+    c.vert_face_locals = vfaces.locals;
+    c.vert_edge_offsets = vedges.offsets;
+    c.vert_edges = vedges.members;
+    c.vert_edge_locals = vedges.locals;
+    c.vert_sharpness = sharpness;
+    c.vert_non_manifold = non_manifold;
+}
+
+/// Faces and edges around the child vertex of parent edge `e`
+/// (`populateVertexFacesFromParentEdges`, `populateVertexEdgesFromParentEdges`).
+fn push_edge_vertex_rows(
+    parent: &Level,
+    r: &Refinement,
+    e: usize,
+    vfaces: &mut Rows,
+    vedges: &mut Rows,
+) {
+    let ef = parent.edge_faces(e);
+    let el = parent.edge_face_local_indices(e);
+    let ev = parent.edge_vertices(e);
+    for (&pf, &in_face) in ef.iter().zip(el) {
+        let n = parent.face_vertices(pf as usize).len();
+        let c0 = in_face as usize;
+        let c1 = if c0 + 1 == n { 0 } else { c0 + 1 };
+        let quad = n == 4;
+        vfaces.push(
+            Refinement::face_child_face(parent, pf as usize, c1),
+            if quad { c0 as u32 } else { 3 },
+        );
+        vfaces.push(
+            Refinement::face_child_face(parent, pf as usize, c0),
+            if quad { c1 as u32 } else { 1 },
+        );
+    }
+    vfaces.end_row();
+
+    let start = vedges.members.len();
+    vedges.push(r.edge_child_edge(e, 0), 0);
+    vedges.push(r.edge_child_edge(e, 1), 0);
+    for (i, (&pf, &in_face)) in ef.iter().zip(el).enumerate() {
+        vedges.push(
+            (parent.face_offset(pf as usize) + in_face as usize) as u32,
+            1,
+        );
+        if i == 0 {
+            // Put the first face's edge between the two halves, so that the edges turn
+            // counter-clockwise around the new vertex.
+            let m = &mut vedges.members[start..];
+            let l = &mut vedges.locals[start..];
+            if ev[0] != ev[1] && parent.face_vertices(pf as usize)[in_face as usize] == ev[0] {
+                m.swap(0, 1);
+                l.swap(0, 1);
+            }
+            m.swap(1, 2);
+            l.swap(1, 2);
+        }
+    }
+    vedges.end_row();
+}

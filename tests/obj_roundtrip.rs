@@ -2,7 +2,10 @@
 //! every shape loads with the counts of the shapes' `INDEX.tsv`, and write -> read gives
 //! the same mesh bit for bit.
 
-use std::path::{Path, PathBuf};
+#[path = "support/osd_shapes.rs"]
+mod osd_shapes;
+
+use std::path::Path;
 
 use glam::DVec3;
 use profsubd::io::obj::{parse_obj, read_obj_file, to_obj_string};
@@ -11,24 +14,7 @@ use profsubd::{Corner, Crease, Mesh, MeshParts};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-/// The OpenSubdiv shapes folder: `$PROFSUBD_OSD_SHAPES`, else `<repo>/../shared/conformance/osd_shapes`.
-fn shapes_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("PROFSUBD_OSD_SHAPES")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| {
-            Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/conformance/osd_shapes")
-        });
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "NOTICE: OpenSubdiv shapes folder {} not found (set PROFSUBD_OSD_SHAPES); \
-             skipping the shape tests, the generated-mesh tests still run",
-            dir.display()
-        );
-        None
-    }
-}
+use osd_shapes::{index, shapes_dir};
 
 /// Every bit of a mesh: positions and sharpness as raw bits, the rest as is.
 fn assert_bit_identical(a: &Mesh, b: &Mesh, what: &str) {
@@ -69,38 +55,30 @@ fn round_trip(mesh: &Mesh, what: &str) {
 #[test]
 fn every_osd_shape_loads_with_index_counts_and_round_trips() {
     let Some(dir) = shapes_dir() else { return };
-    let index = std::fs::read_to_string(dir.join("INDEX.tsv")).expect("INDEX.tsv");
-    let mut rows = 0;
-    for row in index.lines().skip(1).filter(|l| !l.trim().is_empty()) {
-        let cols: Vec<&str> = row.split('\t').collect();
-        let (name, verts, faces) = (cols[0], cols[1], cols[2]);
-        let path = dir.join(format!("{name}.obj"));
-        let read = read_obj_file(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
-        assert_eq!(
-            read.mesh.num_vertices().to_string(),
-            verts,
-            "{name}: vertices"
-        );
-        assert_eq!(read.mesh.num_faces().to_string(), faces, "{name}: faces");
+    let rows = index(&dir);
+    for row in &rows {
+        let name = row.name.as_str();
+        let read = read_obj_file(&row.path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_eq!(read.mesh.num_vertices(), row.verts, "{name}: vertices");
+        assert_eq!(read.mesh.num_faces(), row.faces, "{name}: faces");
         let boundary = match read.mesh.options().boundary {
             None => "untagged",
             Some(BoundaryInterpolation::None) => "none",
             Some(BoundaryInterpolation::EdgeOnly) => "edge",
             Some(BoundaryInterpolation::EdgeAndCorner) => "edgeandcorner",
         };
-        assert_eq!(boundary, cols[6], "{name}: boundary tag");
+        assert_eq!(boundary, row.boundary, "{name}: boundary tag");
         assert_eq!(
             !read.mesh.creases().is_empty(),
-            cols[4] == "yes",
+            row.has_creases,
             "{name}: creases"
         );
         assert_eq!(
             !read.mesh.corners().is_empty(),
-            cols[5] == "yes",
+            row.has_corners,
             "{name}: corners"
         );
         round_trip(&read.mesh, name);
-        rows += 1;
     }
     let objs = std::fs::read_dir(&dir)
         .unwrap()
@@ -112,8 +90,12 @@ fn every_osd_shape_loads_with_index_counts_and_round_trips() {
                 .is_some_and(|x| x == "obj")
         })
         .count();
-    assert_eq!(rows, objs, "INDEX.tsv must list every .obj of the folder");
-    assert_eq!(rows, 87);
+    assert_eq!(
+        rows.len(),
+        objs,
+        "INDEX.tsv must list every .obj of the folder"
+    );
+    assert_eq!(rows.len(), 87);
 }
 
 #[test]

@@ -16,6 +16,9 @@ use glam::DVec3;
 use crate::error::{Error, Result};
 use crate::options::PartialOptions;
 
+pub mod validate;
+pub use validate::MeshReport;
+
 /// Largest number of vertices, faces or face-vertex indices a mesh may have: OpenSubdiv
 /// indexes components with a signed 32-bit `int`.
 pub const MAX_COMPONENTS: usize = i32::MAX as usize;

@@ -1,0 +1,14 @@
+//! Revolution and general sweeps: a planar profile moved along a trajectory (issue 5).
+//!
+//! - [`curve`]: open or closed space curves through points (splines broken at corners, polylines);
+//! - [`frames`]: fixed, Frenet and rotation-minimizing frames along a sampled trajectory;
+//! - [`profile`]: the swept profile, its samples, scaling and morphing;
+//! - [`trajectory`]: the validated trajectory, its samples and their frames;
+//! - [`sweep`]: the sweep input (JSON) and its grid of data points.
+
+pub mod curve;
+pub mod frames;
+pub mod profile;
+#[allow(clippy::module_inception)]
+pub mod sweep;
+pub mod trajectory;

@@ -1,0 +1,373 @@
+//! General sweeps: the JSON/Rust input and the grid of data points it defines.
+//!
+//! ```json
+//! { "profile": [[a,b],...], "closed_profile": true, "trajectory": [[x,y,z],...],
+//!   "closed_trajectory": false, "frame": "rmf", "samples_profile": 16,
+//!   "samples_trajectory": 32, "scale": [1, 1], "profile_end": [[a,b],...],
+//!   "interpolation": "spline", "sharp_angle_deg": 30 }
+//! ```
+//! Only `profile` and `trajectory` are required; an unknown key is an error. Defaults:
+//! `closed_profile` = `closed_trajectory` = `false`, `frame` = `"rmf"` (or `"fixed"`,
+//! `"frenet"`, see [`super::frames`]), `samples_profile` = 16 and `samples_trajectory` = 32
+//! sample *intervals* (a closed curve has as many samples, an open one one more),
+//! `scale` = `[1, 1]` (the profile is scaled linearly from the first to the second factor
+//! along the trajectory's length), `profile_end` = none (with it, the profile morphs linearly
+//! into this second profile, which must have the same point count), `interpolation` =
+//! `"spline"` (`"polyline"` takes the points literally), `sharp_angle_deg` = 30 (points turning
+//! by more are corners). Profile coordinates `(a, b)` run along the frame's normal and
+//! binormal; the profile's origin follows the trajectory.
+//!
+//! Features: a profile corner becomes a column of crease edges along the sweep direction, a
+//! trajectory corner a ring of crease edges across it (its section is mitered, see
+//! [`super::frames`]). Faces are oriented outward for a closed profile (whichever way it
+//! runs); for an open profile the normal is `profile direction × sweep direction`.
+
+use std::path::Path;
+
+use glam::DVec3;
+use serde::Deserialize;
+
+use super::curve::Joining;
+use super::frames::FrameKind;
+use super::profile::SweptProfile;
+use super::trajectory::Trajectory;
+use crate::error::{Error, Result};
+
+/// Largest accepted sample interval count in one direction.
+pub const MAX_SAMPLES: usize = 4096;
+/// Largest accepted product of the two sample counts.
+pub const MAX_SAMPLE_PRODUCT: usize = 4_000_000;
+
+/// A sweep: profile, trajectory, frame and sampling. See the module documentation for the
+/// JSON form and the defaults.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepInput {
+    /// Profile points `(a, b)` in the frame's (normal, binormal) plane.
+    pub profile: Vec<[f64; 2]>,
+    /// Whether the profile's last point joins its first. Default false.
+    #[serde(default)]
+    pub closed_profile: bool,
+    /// Trajectory points `(x, y, z)`.
+    pub trajectory: Vec<[f64; 3]>,
+    /// Whether the trajectory's last point joins its first. Default false.
+    #[serde(default)]
+    pub closed_trajectory: bool,
+    /// Frame along the trajectory. Default rotation-minimizing.
+    #[serde(default)]
+    pub frame: FrameKind,
+    /// Sample intervals along the profile. Default 16.
+    #[serde(default = "default_samples_profile")]
+    pub samples_profile: usize,
+    /// Sample intervals along the trajectory. Default 32.
+    #[serde(default = "default_samples_trajectory")]
+    pub samples_trajectory: usize,
+    /// Profile scale at the start and at the end of the trajectory. Default `[1, 1]`.
+    #[serde(default = "default_scale")]
+    pub scale: [f64; 2],
+    /// Profile to morph into along the trajectory (same point count). Default none.
+    #[serde(default)]
+    pub profile_end: Option<Vec<[f64; 2]>>,
+    /// How the points of both curves are joined. Default spline.
+    #[serde(default)]
+    pub interpolation: Joining,
+    /// Turning angle (degrees) above which a point is a corner. Default 30.
+    #[serde(default = "default_sharp_angle")]
+    pub sharp_angle_deg: f64,
+}
+
+fn default_samples_profile() -> usize {
+    16
+}
+fn default_samples_trajectory() -> usize {
+    32
+}
+fn default_scale() -> [f64; 2] {
+    [1.0, 1.0]
+}
+fn default_sharp_angle() -> f64 {
+    30.0
+}
+
+/// The data points of a sweep on a grid, with what the mesh needs to know about it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepGrid {
+    /// One ring per trajectory sample, each with one data point per profile sample.
+    pub rings: Vec<Vec<DVec3>>,
+    /// Whether each ring is closed (closed profile).
+    pub ring_closed: bool,
+    /// Whether the last ring joins the first (closed trajectory).
+    pub rings_closed: bool,
+    /// Rings at trajectory corners: crease rings across the sweep.
+    pub crease_rings: Vec<usize>,
+    /// Profile samples at profile corners: crease columns along the sweep.
+    pub crease_columns: Vec<usize>,
+    /// Whether faces must be reversed to face outward (a clockwise closed profile).
+    pub flip: bool,
+}
+
+impl SweepInput {
+    /// An input with the given curves and every setting at its default.
+    pub fn new(profile: Vec<[f64; 2]>, trajectory: Vec<[f64; 3]>) -> SweepInput {
+        SweepInput {
+            profile,
+            closed_profile: false,
+            trajectory,
+            closed_trajectory: false,
+            frame: FrameKind::default(),
+            samples_profile: default_samples_profile(),
+            samples_trajectory: default_samples_trajectory(),
+            scale: default_scale(),
+            profile_end: None,
+            interpolation: Joining::default(),
+            sharp_angle_deg: default_sharp_angle(),
+        }
+    }
+
+    /// Parse the JSON form; `path` only names the input in messages.
+    pub fn from_json(text: &str, path: &Path) -> Result<SweepInput> {
+        serde_json::from_str(text).map_err(|e| Error::Parse {
+            path: path.to_path_buf(),
+            line: e.line(),
+            message: e.to_string(),
+        })
+    }
+
+    fn check_settings(&self) -> Result<()> {
+        let (np, nt) = (self.samples_profile, self.samples_trajectory);
+        if !(1..=MAX_SAMPLES).contains(&np)
+            || !(1..=MAX_SAMPLES).contains(&nt)
+            || np * nt > MAX_SAMPLE_PRODUCT
+        {
+            return Err(Error::invalid_argument(format!(
+                "samples_profile = {np} and samples_trajectory = {nt}: each must be 1..={MAX_SAMPLES} \
+                 and their product at most {MAX_SAMPLE_PRODUCT}"
+            )));
+        }
+        if !(self.sharp_angle_deg.is_finite() && (0.0..=180.0).contains(&self.sharp_angle_deg)) {
+            return Err(Error::invalid_argument(format!(
+                "sharp_angle_deg = {} must be a number of degrees in 0..=180",
+                self.sharp_angle_deg
+            )));
+        }
+        if self.scale.iter().any(|s| !s.is_finite() || *s <= 0.0) {
+            return Err(Error::invalid_argument(format!(
+                "scale = [{}, {}]: both factors must be finite and positive",
+                self.scale[0], self.scale[1]
+            )));
+        }
+        if self.closed_trajectory && (self.scale[0] != self.scale[1] || self.profile_end.is_some())
+        {
+            return Err(Error::invalid_argument(
+                "a closed trajectory needs the same profile at both ends: equal scale factors \
+                 and no profile_end (the surface would not close)",
+            ));
+        }
+        Ok(())
+    }
+
+    /// Sample the sweep: validate everything and compute the grid of data points.
+    ///
+    /// Errors ([`Error::InvalidArgument`]) with a message naming the culprit: bad counts or
+    /// settings, the profile or trajectory errors of [`SweptProfile::new`] and
+    /// [`Trajectory::new`], a frame that cannot be built (see [`super::frames`]).
+    pub fn grid(&self) -> Result<SweepGrid> {
+        self.check_settings()?;
+        let sharp = self.sharp_angle_deg.to_radians();
+        let profile = SweptProfile::new(
+            &self.profile,
+            self.profile_end.as_deref(),
+            self.closed_profile,
+            self.interpolation,
+            sharp,
+        )?;
+        let points: Vec<DVec3> = self.trajectory.iter().map(|&p| DVec3::from(p)).collect();
+        let trajectory = Trajectory::new(
+            &points,
+            self.closed_trajectory,
+            self.interpolation,
+            sharp,
+            &[],
+        )?;
+        let section = profile.sample(self.samples_profile)?;
+        let samples = trajectory.samples(self.samples_trajectory, self.frame)?;
+        let rings = samples
+            .iter()
+            .map(|t| {
+                let scale = self.scale[0] + (self.scale[1] - self.scale[0]) * t.fraction;
+                section
+                    .at(t.fraction, scale)
+                    .map(|p| t.frame.place(p.x, p.y))
+                    .collect()
+            })
+            .collect();
+        Ok(SweepGrid {
+            rings,
+            ring_closed: section.closed,
+            rings_closed: self.closed_trajectory,
+            crease_rings: (0..samples.len()).filter(|&i| samples[i].corner).collect(),
+            crease_columns: section.corners,
+            flip: section.clockwise,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::TAU;
+
+    fn circle2(n: usize, r: f64) -> Vec<[f64; 2]> {
+        (0..n)
+            .map(|i| {
+                let t = TAU * i as f64 / n as f64;
+                [r * t.cos(), r * t.sin()]
+            })
+            .collect()
+    }
+
+    fn circle3(n: usize, r: f64) -> Vec<[f64; 3]> {
+        circle2(n, r)
+            .into_iter()
+            .map(|[x, y]| [x, y, 0.0])
+            .collect()
+    }
+
+    #[test]
+    fn circle_along_circle_samples_a_torus() {
+        let mut input = SweepInput::new(circle2(16, 0.5), circle3(16, 2.0));
+        input.closed_profile = true;
+        input.closed_trajectory = true;
+        let g = input.grid().unwrap();
+        assert_eq!(g.rings.len(), 32);
+        assert!(g.rings.iter().all(|r| r.len() == 16));
+        assert!(g.ring_closed && g.rings_closed && !g.flip);
+        assert!(g.crease_rings.is_empty() && g.crease_columns.is_empty());
+        let mut worst: f64 = 0.0;
+        for p in g.rings.iter().flatten() {
+            let q = (p.truncate().length() - 2.0).hypot(p.z);
+            worst = worst.max((q - 0.5).abs());
+        }
+        assert!(worst < 2e-4, "torus deviation {worst}");
+    }
+
+    #[test]
+    fn square_profile_on_closed_curve_gives_four_crease_columns_and_no_ring() {
+        let mut input = SweepInput::new(
+            vec![[-0.2, -0.2], [0.2, -0.2], [0.2, 0.2], [-0.2, 0.2]],
+            circle3(16, 3.0),
+        );
+        input.closed_profile = true;
+        input.closed_trajectory = true;
+        input.samples_profile = 8;
+        let g = input.grid().unwrap();
+        assert_eq!(g.crease_columns, vec![0, 2, 4, 6]);
+        assert!(g.crease_rings.is_empty());
+        // Clockwise profile: faces must be flipped.
+        input.profile.reverse();
+        assert!(input.grid().unwrap().flip);
+    }
+
+    #[test]
+    fn l_shaped_trajectory_gives_a_mitered_crease_ring() {
+        let mut input = SweepInput::new(
+            circle2(8, 0.25),
+            vec![[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [2.0, 2.0, 0.0]],
+        );
+        input.closed_profile = true;
+        input.samples_trajectory = 8;
+        let g = input.grid().unwrap();
+        assert_eq!(g.crease_rings, vec![4]);
+        // Every corner-ring point lies on the miter plane x − 2 = −y... i.e. (x−2) + y = 0.
+        for p in &g.rings[4] {
+            assert!((p.x - 2.0 + p.y).abs() < 1e-12, "{p}");
+        }
+    }
+
+    #[test]
+    fn scale_and_morph_follow_the_trajectory_fraction() {
+        let mut input = SweepInput::new(
+            vec![[1.0, 0.0], [1.0, 1.0]],
+            vec![[0.0, 0.0, 0.0], [0.0, 0.0, 4.0]],
+        );
+        input.scale = [1.0, 3.0];
+        input.samples_trajectory = 4;
+        input.samples_profile = 1;
+        input.profile_end = Some(vec![[2.0, 0.0], [2.0, 1.0]]);
+        let g = input.grid().unwrap();
+        // Straight trajectory along z: normal from the least aligned axis (x), binormal y.
+        assert_eq!(
+            g.rings[0],
+            vec![DVec3::new(1.0, 0.0, 0.0), DVec3::new(1.0, 1.0, 0.0)]
+        );
+        // Half way: scale 2, profile (1.5, ·).
+        assert_eq!(
+            g.rings[2],
+            vec![DVec3::new(3.0, 0.0, 2.0), DVec3::new(3.0, 2.0, 2.0)]
+        );
+        assert_eq!(
+            g.rings[4],
+            vec![DVec3::new(6.0, 0.0, 4.0), DVec3::new(6.0, 3.0, 4.0)]
+        );
+    }
+
+    #[test]
+    fn json_defaults_unknown_keys_and_bad_settings() {
+        let p = Path::new("in.json");
+        let i = SweepInput::from_json(
+            r#"{"profile": [[0,0],[1,0]], "trajectory": [[0,0,0],[0,0,1]]}"#,
+            p,
+        )
+        .unwrap();
+        assert_eq!(
+            i,
+            SweepInput::new(
+                vec![[0.0, 0.0], [1.0, 0.0]],
+                vec![[0.0, 0.0, 0.0], [0.0, 0.0, 1.0]]
+            )
+        );
+        let e = SweepInput::from_json(r#"{"profile": [], "trajectory": [], "frames": "rmf"}"#, p)
+            .unwrap_err();
+        assert!(
+            matches!(e, Error::Parse { message, .. } if message.contains("unknown field `frames`"))
+        );
+        let e = SweepInput::from_json(r#"{"profile": [], "trajectory": [], "frame": "bishop"}"#, p)
+            .unwrap_err();
+        assert!(matches!(e, Error::Parse { .. }));
+        let i = SweepInput::from_json(
+            r#"{"profile": [[0,0],[1,0]], "trajectory": [[0,0,0],[0,0,1]], "frame": "frenet", "interpolation": "polyline"}"#,
+            p,
+        )
+        .unwrap();
+        assert_eq!(i.frame, FrameKind::Frenet);
+        assert_eq!(i.interpolation, Joining::Polyline);
+        let msg = |f: &dyn Fn(&mut SweepInput)| {
+            let mut i = SweepInput::new(
+                vec![[0.0, 0.0], [1.0, 0.0]],
+                vec![[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 2.0]],
+            );
+            f(&mut i);
+            match i.grid() {
+                Err(Error::InvalidArgument(m)) => m,
+                other => panic!("expected an error, got {other:?}"),
+            }
+        };
+        assert!(msg(&|i| i.samples_profile = 0).contains("samples_profile = 0"));
+        assert!(msg(&|i| i.samples_trajectory = 100_000).contains("4096"));
+        assert!(msg(&|i| i.scale = [1.0, 0.0]).contains("positive"));
+        assert!(msg(&|i| {
+            i.closed_trajectory = true;
+            i.scale = [1.0, 2.0];
+        })
+        .contains("closed trajectory"));
+        assert!(msg(&|i| i.trajectory[1] = i.trajectory[0]).contains("coincide"));
+        assert!(msg(&|i| i.profile = vec![[0.0, 0.0]])
+            .contains("profile: an open curve needs at least 2"));
+        assert!(msg(&|i| {
+            i.trajectory = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]];
+            i.frame = FrameKind::Frenet;
+        })
+        .contains("undefined everywhere"));
+        assert!(msg(&|i| i.sharp_angle_deg = f64::NAN).contains("sharp_angle_deg"));
+    }
+}

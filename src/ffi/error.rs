@@ -1,0 +1,121 @@
+//! Errors of the C layer and the per-thread last error message.
+
+use std::cell::RefCell;
+use std::ffi::{c_char, CString};
+
+use crate::error::Error;
+use crate::ffi::status::profsubd_status::{self, *};
+
+/// An error as a C caller sees it: a status and a message. Besides the crate's [`Error`]
+/// kinds it has the statuses that only exist at the C boundary (NULL, buffer, handle).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FfiError {
+    /// The status returned to the caller.
+    pub status: profsubd_status,
+    /// The message `profsubd_last_error_message` returns.
+    pub message: String,
+}
+
+/// Result of the C layer's internal steps.
+pub type FfiResult<T> = std::result::Result<T, FfiError>;
+
+impl FfiError {
+    /// An error with this status and message.
+    pub fn new(status: profsubd_status, message: impl Into<String>) -> Self {
+        FfiError {
+            status,
+            message: message.into(),
+        }
+    }
+
+    /// The required pointer argument `name` is NULL.
+    pub fn null_argument(name: &str) -> Self {
+        Self::new(
+            PROFSUBD_ERROR_NULL_ARGUMENT,
+            format!("argument `{name}` is NULL"),
+        )
+    }
+
+    /// An argument out of range.
+    pub fn invalid_argument(message: impl Into<String>) -> Self {
+        Self::new(PROFSUBD_ERROR_INVALID_ARGUMENT, message)
+    }
+}
+
+impl From<Error> for FfiError {
+    fn from(e: Error) -> Self {
+        FfiError {
+            status: profsubd_status::from(&e),
+            message: e.to_string(),
+        }
+    }
+}
+
+thread_local! {
+    static LAST_ERROR: RefCell<CString> = RefCell::new(CString::default());
+}
+
+/// Record `message` as this thread's last error (interior NUL bytes become spaces).
+pub fn set_last_error(message: &str) {
+    let bytes: Vec<u8> = message
+        .bytes()
+        .map(|b| if b == 0 { b' ' } else { b })
+        .collect();
+    // No NUL left, so this cannot fail; the fallback keeps the function panic-free.
+    let c = CString::new(bytes).unwrap_or_default();
+    LAST_ERROR.with(|e| *e.borrow_mut() = c);
+}
+
+/// Make this thread's last error the empty string (cheap when it already is).
+pub fn clear_last_error() {
+    LAST_ERROR.with(|e| {
+        if !e.borrow().is_empty() {
+            *e.borrow_mut() = CString::default();
+        }
+    });
+}
+
+/// This thread's last error message, as Rust text (for tests and Rust callers of the C layer).
+pub fn last_error() -> String {
+    LAST_ERROR.with(|e| e.borrow().to_string_lossy().into_owned())
+}
+
+/// The message of the most recent call on this thread that returned a `profsubd_status`:
+/// "" if that call returned `PROFSUBD_OK`. Never NULL. The string belongs to the library and
+/// stays valid until the next profsubd call on the same thread; copy it to keep it.
+#[no_mangle]
+pub extern "C" fn profsubd_last_error_message() -> *const c_char {
+    crate::ffi::panic::guard(|| LAST_ERROR.with(|e| e.borrow().as_ptr()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::ffi::CStr;
+
+    fn c_message() -> String {
+        unsafe { CStr::from_ptr(profsubd_last_error_message()) }
+            .to_str()
+            .unwrap()
+            .to_owned()
+    }
+
+    #[test]
+    fn message_is_per_thread_and_cleared() {
+        set_last_error("first\0part");
+        assert_eq!(c_message(), "first part");
+        std::thread::spawn(|| assert_eq!(c_message(), ""))
+            .join()
+            .unwrap();
+        assert_eq!(c_message(), "first part");
+        clear_last_error();
+        assert_eq!(c_message(), "");
+    }
+
+    #[test]
+    fn crate_errors_keep_their_message() {
+        let e = FfiError::from(Error::invalid_mesh("face 3 has 2 vertices"));
+        assert_eq!(e.status, PROFSUBD_ERROR_INVALID_MESH);
+        assert_eq!(e.message, "invalid mesh: face 3 has 2 vertices");
+    }
+}

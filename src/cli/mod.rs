@@ -8,6 +8,7 @@
 //! Exit codes: 0 success; 1 error (unreadable or invalid input, bad arguments), with the
 //! reason on stderr; subcommands may define more (`check`: 2 for a non-manifold mesh).
 
+pub mod check;
 pub mod convert;
 
 use std::ffi::OsString;
@@ -37,6 +38,16 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
+    /// Report a mesh's topology, tags and options; exit 0 if it is a manifold.
+    ///
+    /// Prints counts, face sizes and valences (size:count), the boundary, components,
+    /// Euler characteristic, non-manifold edges and vertices, inconsistently oriented edges,
+    /// isolated vertices, faces that repeat a vertex (with the first few offenders,
+    /// 0-based vertex and face indices as in OBJ tags), crease, corner and hole tags, and
+    /// the subdivision options in effect with where each comes from. Exit code 0 for a
+    /// manifold mesh, 2 for a mesh that loads but is not a manifold (OpenSubdiv accepts
+    /// it), 1 for a file that cannot be read or is not a valid mesh (reason on stderr).
+    Check(check::CheckArgs),
     /// Rewrite an OBJ mesh: exact coordinates, normalized tags, options overridden.
     ///
     /// Reads an OBJ mesh with OpenSubdiv tags and writes it back with every coordinate
@@ -148,6 +159,7 @@ where
 /// Run one subcommand.
 pub fn dispatch(command: &Command) -> Result<i32> {
     match command {
+        Command::Check(args) => check::run(args),
         Command::Convert(args) => convert::run(args),
     }
 }

@@ -1,0 +1,197 @@
+//! `profsubd check MESH.obj`: counts, valences, boundary, non-manifold findings, tags.
+
+use std::collections::BTreeMap;
+use std::fmt::Write;
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::{print_warnings, SubdivFlags};
+use crate::error::Result;
+use crate::io::obj::read_obj_file;
+use crate::mesh::{Mesh, MeshReport, SHARPNESS_INFINITE};
+use crate::options::{BoundaryInterpolation, CreaseMethod, TriangleSubdivision};
+
+/// How many offending items a line lists before it says "...".
+const LISTED: usize = 8;
+
+/// Arguments of `check`.
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// The OBJ file to check.
+    #[arg(value_name = "MESH.obj")]
+    pub mesh: PathBuf,
+    /// Options to report as in effect (they override the file's tags).
+    #[command(flatten)]
+    pub options: SubdivFlags,
+}
+
+/// Run `check`: print the report; exit code 0 for a manifold mesh, 2 for a mesh that loads
+/// but is not a manifold (an unreadable or invalid file is an error, exit code 1).
+pub fn run(args: &CheckArgs) -> Result<i32> {
+    let read = read_obj_file(&args.mesh)?;
+    print_warnings(&read.warnings);
+    let report = read.mesh.check();
+    print!(
+        "{}",
+        format_report(&args.mesh, &read.mesh, &report, &args.options)
+    );
+    Ok(if report.is_manifold() { 0 } else { 2 })
+}
+
+/// The text `check` prints: one `name: value` line per finding.
+pub fn format_report(
+    path: &std::path::Path,
+    mesh: &Mesh,
+    r: &MeshReport,
+    flags: &SubdivFlags,
+) -> String {
+    let mut out = String::new();
+    let mut line = |name: &str, value: String| {
+        let _ = writeln!(out, "{name}: {value}");
+    };
+    line("mesh", path.display().to_string());
+    line("vertices", r.num_vertices.to_string());
+    line("edges", r.num_edges.to_string());
+    line(
+        "faces",
+        format!("{} (sizes {})", r.num_faces, histogram(&r.face_sizes)),
+    );
+    line("valences", histogram(&r.valences));
+    line(
+        "boundary",
+        if r.is_closed() {
+            "closed".to_string()
+        } else {
+            format!(
+                "{} edges in {} loop{}{}",
+                r.boundary_edges.len(),
+                r.num_boundary_loops,
+                if r.num_boundary_loops == 1 { "" } else { "s" },
+                listed(r.boundary_edges.iter().map(|[a, b]| format!("{a}-{b}")))
+            )
+        },
+    );
+    line("components", r.num_components.to_string());
+    line("euler characteristic", r.euler_characteristic.to_string());
+    let edges = |list: &[[u32; 2]]| {
+        count_and_list(list.len(), list.iter().map(|[a, b]| format!("{a}-{b}")))
+    };
+    let indices = |list: &[u32]| count_and_list(list.len(), list.iter().map(u32::to_string));
+    line("non-manifold edges", edges(&r.non_manifold_edges));
+    line(
+        "inconsistently oriented edges",
+        edges(&r.inconsistent_edges),
+    );
+    line("non-manifold vertices", indices(&r.non_manifold_vertices));
+    line("isolated vertices", indices(&r.isolated_vertices));
+    line(
+        "faces with repeated vertices",
+        indices(&r.faces_with_repeated_vertices),
+    );
+    line(
+        "creases",
+        sharpness_summary(mesh.creases().iter().map(|c| c.sharpness)),
+    );
+    line(
+        "corners",
+        sharpness_summary(mesh.corners().iter().map(|c| c.sharpness)),
+    );
+    line("holes", indices(mesh.holes()));
+    let file = mesh.options();
+    let given = flags.partial();
+    let resolved = given.over(file).resolve();
+    let source = |flag: bool, tag: bool| match (flag, tag) {
+        (true, _) => "command line",
+        (false, true) => "file tag",
+        _ => "default",
+    };
+    let settings = [
+        (
+            "boundary interpolation",
+            match resolved.boundary {
+                BoundaryInterpolation::None => "none",
+                BoundaryInterpolation::EdgeOnly => "edge-only",
+                BoundaryInterpolation::EdgeAndCorner => "edge-and-corner",
+            },
+            source(given.boundary.is_some(), file.boundary.is_some()),
+        ),
+        (
+            "crease method",
+            match resolved.crease_method {
+                CreaseMethod::Uniform => "uniform",
+                CreaseMethod::Chaikin => "chaikin",
+            },
+            source(given.crease_method.is_some(), file.crease_method.is_some()),
+        ),
+        (
+            "triangles",
+            match resolved.triangles {
+                TriangleSubdivision::Catmark => "catmark",
+                TriangleSubdivision::Smooth => "smooth",
+            },
+            source(given.triangles.is_some(), file.triangles.is_some()),
+        ),
+    ];
+    for (name, value, from) in settings {
+        line(name, format!("{value} ({from})"));
+    }
+    let verdict = if r.is_manifold() {
+        "manifold mesh".to_string()
+    } else {
+        let problems: Vec<String> = [
+            (r.non_manifold_edges.len(), "non-manifold edges"),
+            (r.inconsistent_edges.len(), "inconsistently oriented edges"),
+            (r.non_manifold_vertices.len(), "non-manifold vertices"),
+            (r.isolated_vertices.len(), "isolated vertices"),
+            (
+                r.faces_with_repeated_vertices.len(),
+                "faces with repeated vertices",
+            ),
+        ]
+        .iter()
+        .filter(|(n, _)| *n > 0)
+        .map(|(n, what)| format!("{n} {what}"))
+        .collect();
+        format!("not a manifold ({})", problems.join(", "))
+    };
+    line("result", verdict);
+    out
+}
+
+/// `k:n k:n ...` for a histogram.
+fn histogram(h: &BTreeMap<usize, usize>) -> String {
+    let parts: Vec<String> = h.iter().map(|(k, n)| format!("{k}:{n}")).collect();
+    parts.join(" ")
+}
+
+/// ` [a b c ...]`: the first [`LISTED`] items, or nothing for an empty list.
+fn listed(items: impl ExactSizeIterator<Item = String>) -> String {
+    let n = items.len();
+    if n == 0 {
+        return String::new();
+    }
+    let shown: Vec<String> = items.take(LISTED).collect();
+    let more = if n > LISTED { " ..." } else { "" };
+    format!(" [{}{more}]", shown.join(" "))
+}
+
+/// `n [a b c ...]`.
+fn count_and_list(n: usize, items: impl ExactSizeIterator<Item = String>) -> String {
+    format!("{n}{}", listed(items))
+}
+
+/// `n (sharpness lo to hi, k infinitely sharp)`, or `0`.
+fn sharpness_summary(values: impl Iterator<Item = f32>) -> String {
+    let values: Vec<f32> = values.collect();
+    if values.is_empty() {
+        return "0".to_string();
+    }
+    let lo = values.iter().copied().fold(f32::INFINITY, f32::min);
+    let hi = values.iter().copied().fold(f32::NEG_INFINITY, f32::max);
+    let infinite = values.iter().filter(|&&s| s >= SHARPNESS_INFINITE).count();
+    format!(
+        "{} (sharpness {lo} to {hi}, {infinite} infinitely sharp)",
+        values.len()
+    )
+}

@@ -210,61 +210,71 @@ impl SpaceCurve {
     ///
     /// Errors ([`Error::InvalidArgument`]): fewer intervals than pieces between corners.
     pub fn sample_parameters(&self, what: &str, segments: usize) -> Result<Vec<CurveSample>> {
-        let len = self.length();
-        let mut fixed: Vec<f64> = vec![0.0];
-        fixed.extend(
-            self.corners
-                .iter()
-                .filter(|&&c| c > 0)
-                .map(|&c| self.knots[c]),
-        );
-        fixed.push(len);
+        let mut out = self.sample_range(what, 0.0, self.length(), segments)?;
+        if self.closed {
+            out.pop();
+            out[0].corner = self.corners.first() == Some(&0);
+        }
+        Ok(out)
+    }
+
+    /// `segments + 1` samples from parameter `s0` to `s1` (the rules of
+    /// [`SpaceCurve::sample_parameters`] inside the range); the end samples are marked as
+    /// corners when they sit on one.
+    pub fn sample_range(
+        &self,
+        what: &str,
+        s0: f64,
+        s1: f64,
+        segments: usize,
+    ) -> Result<Vec<CurveSample>> {
+        let corner_knots: Vec<f64> = self.corners.iter().map(|&c| self.knots[c]).collect();
+        let is_corner = |s: f64| corner_knots.contains(&s);
+        let mut fixed: Vec<f64> = vec![s0];
+        fixed.extend(corner_knots.iter().filter(|&&k| k > s0 && k < s1));
+        fixed.push(s1);
         let pieces = fixed.len() - 1;
         if segments < pieces {
             return Err(Error::invalid_argument(format!(
                 "{what}: {segments} sample intervals cannot reach the {} corners; give at least {pieces}",
-                self.corners.len()
+                pieces - 1
             )));
         }
+        let len = s1 - s0;
         let ideal: Vec<f64> = fixed
             .windows(2)
             .map(|w| segments as f64 * (w[1] - w[0]) / len)
             .collect();
         let mut count: Vec<usize> = ideal.iter().map(|&x| (x.floor() as usize).max(1)).collect();
+        let density = |k: usize, count: &[usize]| ideal[k] / count[k] as f64;
         // Adjust to the exact total: add where intervals are longest, remove where shortest.
         while count.iter().sum::<usize>() < segments {
             let k = (0..pieces)
-                .max_by(|&a, &b| {
-                    (ideal[a] / count[a] as f64).total_cmp(&(ideal[b] / count[b] as f64))
-                })
+                .max_by(|&a, &b| density(a, &count).total_cmp(&density(b, &count)))
                 .unwrap_or(0);
             count[k] += 1;
         }
         while count.iter().sum::<usize>() > segments {
             let k = (0..pieces)
                 .filter(|&k| count[k] > 1)
-                .min_by(|&a, &b| {
-                    (ideal[a] / count[a] as f64).total_cmp(&(ideal[b] / count[b] as f64))
-                })
+                .min_by(|&a, &b| density(a, &count).total_cmp(&density(b, &count)))
                 .unwrap_or(0);
             count[k] -= 1;
         }
-        let corner0 = self.corners.first() == Some(&0);
         let mut out = Vec::with_capacity(segments + 1);
         for (k, w) in fixed.windows(2).enumerate() {
             for j in 0..count[k] {
+                let s = w[0] + (w[1] - w[0]) * j as f64 / count[k] as f64;
                 out.push(CurveSample {
-                    s: w[0] + (w[1] - w[0]) * j as f64 / count[k] as f64,
-                    corner: j == 0 && (k > 0 || corner0),
+                    s,
+                    corner: j == 0 && is_corner(s),
                 });
             }
         }
-        if !self.closed {
-            out.push(CurveSample {
-                s: len,
-                corner: false,
-            });
-        }
+        out.push(CurveSample {
+            s: s1,
+            corner: is_corner(s1),
+        });
         Ok(out)
     }
 }

@@ -4,11 +4,13 @@
 //! - [`frames`]: fixed, Frenet and rotation-minimizing frames along a sampled trajectory;
 //! - [`profile`]: the swept profile, its samples, scaling and morphing;
 //! - [`trajectory`]: the validated trajectory, its samples and their frames;
-//! - [`sweep`]: the sweep input (JSON) and its grid of data points.
+//! - [`sweep`]: the sweep input (JSON) and its grid of data points;
+//! - [`revolve`]: surfaces of revolution (JSON input, poles, grid of data points).
 
 pub mod curve;
 pub mod frames;
 pub mod profile;
+pub mod revolve;
 #[allow(clippy::module_inception)]
 pub mod sweep;
 pub mod trajectory;

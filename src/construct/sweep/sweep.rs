@@ -89,6 +89,17 @@ fn default_sharp_angle() -> f64 {
     30.0
 }
 
+/// How the first or last ring of a grid is finished.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GridEnd {
+    /// Left open: boundary edges.
+    Open,
+    /// Closed at one tip vertex at this point, tagged as an infinitely sharp corner.
+    Tip(DVec3),
+    /// Closed by a grid cap through a smooth pole.
+    Smooth,
+}
+
 /// The data points of a sweep on a grid, with what the mesh needs to know about it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SweepGrid {
@@ -104,6 +115,8 @@ pub struct SweepGrid {
     pub crease_columns: Vec<usize>,
     /// Whether faces must be reversed to face outward (a clockwise closed profile).
     pub flip: bool,
+    /// How the first and the last ring are finished.
+    pub ends: [GridEnd; 2],
 }
 
 impl SweepInput {
@@ -208,6 +221,7 @@ impl SweepInput {
             crease_rings: (0..samples.len()).filter(|&i| samples[i].corner).collect(),
             crease_columns: section.corners,
             flip: section.clockwise,
+            ends: [GridEnd::Open; 2],
         })
     }
 }

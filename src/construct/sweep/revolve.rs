@@ -1,0 +1,428 @@
+//! Surfaces of revolution: a profile `(r, z)` turned about the z axis.
+//!
+//! ```json
+//! { "profile": [[r,z],...], "angle_deg": 360, "samples_profile": 16, "samples_around": 32,
+//!   "interpolation": "spline", "sharp_angle_deg": 30 }
+//! ```
+//! Only `profile` is required (points from bottom to top, `r ≥ 0`); an unknown key is an
+//! error. Defaults: `angle_deg` = 360 (a full turn, closed; less than 360 leaves boundary
+//! edges along the first and last meridians), `samples_profile` = 16 sample intervals from
+//! bottom to top, `samples_around` = 32 meridian intervals, `interpolation` = `"spline"`,
+//! `sharp_angle_deg` = 30.
+//!
+//! *Poles*: a profile end on the axis (`r = 0`) closes the surface there. The profile is
+//! extended by its mirror image across the axis before it is interpolated, so the spline is
+//! symmetric and meets the axis at a right angle unless the mirrored curve has a corner there:
+//! a profile end whose chord turns (with its mirror) by more than `sharp_angle_deg`, i.e. meets
+//! the axis at more than half that angle from the perpendicular, is a *pointed pole* (a tip
+//! vertex tagged as an infinitely sharp corner, like a cone's apex); otherwise it is a *smooth
+//! pole*, closed by a grid cap of quads (valence 3 and 4 only, see
+//! [`crate::construct::pole_cap`]). Poles need a full turn, `samples_around` a multiple of 4
+//! for a smooth pole and even for a tip. Profile corners give crease rings.
+
+use std::f64::consts::TAU;
+use std::path::Path;
+
+use glam::{DVec2, DVec3};
+use serde::Deserialize;
+
+use super::curve::{detect_corners, Joining, SpaceCurve};
+use super::profile::check_no_crossing;
+use super::sweep::{GridEnd, SweepGrid, MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
+use crate::error::{Error, Result};
+
+/// A surface of revolution. See the module documentation for the JSON form and defaults.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RevolveInput {
+    /// Profile points `(r, z)`, bottom to top, `r ≥ 0`.
+    pub profile: Vec<[f64; 2]>,
+    /// Angle turned, degrees, `0 < angle ≤ 360`. Default 360.
+    #[serde(default = "default_angle")]
+    pub angle_deg: f64,
+    /// Sample intervals along the profile. Default 16.
+    #[serde(default = "default_samples_profile")]
+    pub samples_profile: usize,
+    /// Sample intervals around the axis. Default 32.
+    #[serde(default = "default_samples_around")]
+    pub samples_around: usize,
+    /// How the points are joined. Default spline.
+    #[serde(default)]
+    pub interpolation: Joining,
+    /// Turning angle (degrees) above which a point is a corner. Default 30.
+    #[serde(default = "default_sharp_angle")]
+    pub sharp_angle_deg: f64,
+}
+
+fn default_angle() -> f64 {
+    360.0
+}
+fn default_samples_profile() -> usize {
+    16
+}
+fn default_samples_around() -> usize {
+    32
+}
+fn default_sharp_angle() -> f64 {
+    30.0
+}
+
+/// The validated profile of a revolution, mirrored across the axis at its poles.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RevolvedProfile {
+    curve: SpaceCurve,
+    /// Parameter range of the user's profile on `curve`.
+    range: [f64; 2],
+    /// Which ends are on the axis.
+    on_axis: [bool; 2],
+}
+
+impl RevolvedProfile {
+    /// Validate and interpolate the profile. Errors ([`Error::InvalidArgument`]): those of
+    /// [`SpaceCurve::new`], a negative `r` (the profile crosses the axis), an interior point on
+    /// the axis, a profile that crosses itself, both ends on the axis at the same point.
+    pub fn new(points: &[[f64; 2]], joining: Joining, sharp_angle: f64) -> Result<RevolvedProfile> {
+        let lifted: Vec<DVec3> = points.iter().map(|p| DVec3::new(p[0], p[1], 0.0)).collect();
+        SpaceCurve::new("profile", &lifted, false, Joining::Polyline, &[])?;
+        if let Some(i) = points.iter().position(|p| p[0] < 0.0) {
+            return Err(Error::invalid_argument(format!(
+                "profile point {i} has r = {} < 0: the profile crosses the axis",
+                points[i][0]
+            )));
+        }
+        let n = points.len();
+        if let Some(i) = (1..n - 1).find(|&i| points[i][0] == 0.0) {
+            return Err(Error::invalid_argument(format!(
+                "profile point {i} is on the axis; only the first and last point may be"
+            )));
+        }
+        check_no_crossing("profile", points, false)?;
+        let on_axis = [points[0][0] == 0.0, points[n - 1][0] == 0.0];
+        let mirror = |p: &DVec3| DVec3::new(-p.x, p.y, 0.0);
+        let mut all: Vec<DVec3> = Vec::with_capacity(2 * n);
+        let closed = on_axis[0] && on_axis[1];
+        let first;
+        if closed {
+            if n < 3 {
+                return Err(Error::invalid_argument(
+                    "profile: a profile with both ends on the axis needs a point off the axis",
+                ));
+            }
+            first = 0;
+            all.extend_from_slice(&lifted);
+            all.extend(lifted[1..n - 1].iter().rev().map(mirror));
+        } else {
+            if on_axis[0] {
+                all.extend(lifted[1..].iter().rev().map(mirror));
+            }
+            first = all.len();
+            all.extend_from_slice(&lifted);
+            if on_axis[1] {
+                all.extend(lifted[..n - 1].iter().rev().map(mirror));
+            }
+        }
+        let corners = detect_corners(&all, closed, sharp_angle);
+        let curve = SpaceCurve::new("profile", &all, closed, joining, &corners)?;
+        let range = [curve.knots()[first], curve.knots()[first + n - 1]];
+        Ok(RevolvedProfile {
+            curve,
+            range,
+            on_axis,
+        })
+    }
+
+    /// `(r, z)` at parameter `s` of the (mirrored) curve.
+    pub fn point(&self, s: f64) -> DVec2 {
+        self.curve.eval(s, false).position.truncate()
+    }
+
+    /// Parameter range `[bottom, top]` of the user's profile.
+    pub fn range(&self) -> [f64; 2] {
+        self.range
+    }
+
+    /// The end kind at the bottom (`0`) or top (`1`): open, tip or smooth pole.
+    pub fn end(&self, which: usize) -> GridEnd {
+        if !self.on_axis[which] {
+            return GridEnd::Open;
+        }
+        let s = self.range[which];
+        let tip = self
+            .curve
+            .corners()
+            .iter()
+            .any(|&c| self.curve.knots()[c] == s);
+        if tip {
+            GridEnd::Tip(DVec3::new(0.0, 0.0, self.point(s).y))
+        } else {
+            GridEnd::Smooth
+        }
+    }
+}
+
+/// The point at `(r, z)` turned by `theta` radians about the z axis.
+pub fn revolve_point(p: DVec2, theta: f64) -> DVec3 {
+    DVec3::new(p.x * theta.cos(), p.x * theta.sin(), p.y)
+}
+
+impl RevolveInput {
+    /// An input with the given profile and every setting at its default.
+    pub fn new(profile: Vec<[f64; 2]>) -> RevolveInput {
+        RevolveInput {
+            profile,
+            angle_deg: default_angle(),
+            samples_profile: default_samples_profile(),
+            samples_around: default_samples_around(),
+            interpolation: Joining::default(),
+            sharp_angle_deg: default_sharp_angle(),
+        }
+    }
+
+    /// Parse the JSON form; `path` only names the input in messages.
+    pub fn from_json(text: &str, path: &Path) -> Result<RevolveInput> {
+        serde_json::from_str(text).map_err(|e| Error::Parse {
+            path: path.to_path_buf(),
+            line: e.line(),
+            message: e.to_string(),
+        })
+    }
+
+    /// Whether the revolution is a full turn.
+    pub fn full_turn(&self) -> bool {
+        self.angle_deg == 360.0
+    }
+
+    fn check_settings(&self) -> Result<()> {
+        let (np, na) = (self.samples_profile, self.samples_around);
+        if !(1..=MAX_SAMPLES).contains(&np)
+            || !(3..=MAX_SAMPLES).contains(&na)
+            || np * na > MAX_SAMPLE_PRODUCT
+        {
+            return Err(Error::invalid_argument(format!(
+                "samples_profile = {np} and samples_around = {na}: samples_profile must be \
+                 1..={MAX_SAMPLES}, samples_around 3..={MAX_SAMPLES}, their product at most \
+                 {MAX_SAMPLE_PRODUCT}"
+            )));
+        }
+        if !(self.angle_deg > 0.0 && self.angle_deg <= 360.0) {
+            return Err(Error::invalid_argument(format!(
+                "angle_deg = {} must be in (0, 360]",
+                self.angle_deg
+            )));
+        }
+        if !(self.sharp_angle_deg.is_finite() && (0.0..=180.0).contains(&self.sharp_angle_deg)) {
+            return Err(Error::invalid_argument(format!(
+                "sharp_angle_deg = {} must be a number of degrees in 0..=180",
+                self.sharp_angle_deg
+            )));
+        }
+        Ok(())
+    }
+
+    /// Validate and interpolate the profile.
+    pub fn profile_curve(&self) -> Result<RevolvedProfile> {
+        self.check_settings()?;
+        RevolvedProfile::new(
+            &self.profile,
+            self.interpolation,
+            self.sharp_angle_deg.to_radians(),
+        )
+    }
+
+    /// Sample the revolution: rings from bottom to top (poles excluded), each with one data
+    /// point per meridian. Errors ([`Error::InvalidArgument`]): bad settings or profile (see
+    /// [`RevolvedProfile::new`]), a pole on a partial turn, `samples_around` not a multiple
+    /// of 4 with a smooth pole or odd with a tip, too few profile intervals to leave a ring
+    /// between two poles.
+    pub fn grid(&self, profile: &RevolvedProfile) -> Result<SweepGrid> {
+        let ends = [profile.end(0), profile.end(1)];
+        let na = self.samples_around;
+        for (which, e) in ends.iter().enumerate() {
+            let name = ["bottom", "top"][which];
+            match e {
+                GridEnd::Open => {}
+                _ if !self.full_turn() => {
+                    return Err(Error::invalid_argument(format!(
+                        "the profile's {name} end is on the axis, which needs a full turn \
+                         (angle_deg = 360), got {}",
+                        self.angle_deg
+                    )))
+                }
+                GridEnd::Smooth if na % 4 != 0 => {
+                    return Err(Error::invalid_argument(format!(
+                        "samples_around = {na}: a smooth pole (the {name} end) is closed by a grid \
+                         cap, which needs a multiple of 4"
+                    )))
+                }
+                GridEnd::Tip(_) if na % 2 != 0 => return Err(Error::invalid_argument(format!(
+                    "samples_around = {na}: a pointed pole (the {name} end) needs an even number"
+                ))),
+                _ => {}
+            }
+        }
+        let [s0, s1] = profile.range();
+        let mut samples = profile
+            .curve
+            .sample_range("profile", s0, s1, self.samples_profile)?;
+        let poles = ends.iter().filter(|e| **e != GridEnd::Open).count();
+        if samples.len() < poles + 1 {
+            return Err(Error::invalid_argument(format!(
+                "samples_profile = {}: a profile with two poles needs at least 2 intervals",
+                self.samples_profile
+            )));
+        }
+        if ends[1] != GridEnd::Open {
+            samples.pop();
+        }
+        if ends[0] != GridEnd::Open {
+            samples.remove(0);
+        }
+        let (count, closed) = if self.full_turn() {
+            (na, true)
+        } else {
+            (na + 1, false)
+        };
+        let step = self.angle_deg.to_radians() / na as f64;
+        let rings = samples
+            .iter()
+            .map(|c| {
+                let p = profile.point(c.s);
+                (0..count)
+                    .map(|m| revolve_point(p, step * m as f64))
+                    .collect()
+            })
+            .collect();
+        Ok(SweepGrid {
+            rings,
+            ring_closed: closed,
+            rings_closed: false,
+            crease_rings: (0..samples.len()).filter(|&i| samples[i].corner).collect(),
+            crease_columns: Vec::new(),
+            flip: false,
+            ends,
+        })
+    }
+}
+
+/// Data point of a smooth-pole cap vertex at relative radius `radius` (1 at the last ring,
+/// 0 at the pole) and `turn` (fraction of a full turn): the profile parameter is interpolated
+/// linearly between the pole and the ring, then turned.
+pub fn cap_point(
+    profile: &RevolvedProfile,
+    ring_s: f64,
+    pole_s: f64,
+    radius: f64,
+    turn: f64,
+) -> DVec3 {
+    revolve_point(
+        profile.point(pole_s + radius * (ring_s - pole_s)),
+        TAU * turn,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    fn semicircle(n: usize, r: f64) -> Vec<[f64; 2]> {
+        (0..=n)
+            .map(|i| {
+                let t = -PI / 2.0 + PI * i as f64 / n as f64;
+                [
+                    if i == 0 || i == n { 0.0 } else { r * t.cos() },
+                    r * t.sin(),
+                ]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn semicircle_gives_a_sphere_with_two_smooth_poles() {
+        let input = RevolveInput::new(semicircle(12, 1.5));
+        let prof = input.profile_curve().unwrap();
+        assert_eq!(prof.end(0), GridEnd::Smooth);
+        assert_eq!(prof.end(1), GridEnd::Smooth);
+        // The mirrored spline meets the axis at a right angle.
+        let d = prof.curve.eval(prof.range()[0], false).d1;
+        assert!(d.y.abs() < 1e-12 * d.length(), "{d}");
+        let g = input.grid(&prof).unwrap();
+        assert_eq!(g.rings.len(), 15);
+        assert!(g.rings.iter().all(|r| r.len() == 32));
+        let worst = g
+            .rings
+            .iter()
+            .flatten()
+            .map(|p| (p.length() - 1.5).abs())
+            .fold(0.0, f64::max);
+        assert!(worst < 1e-4, "{worst}");
+        assert!(g.crease_rings.is_empty());
+    }
+
+    #[test]
+    fn segments_give_cylinder_and_cone_with_a_tip() {
+        let input = RevolveInput::new(vec![[1.0, 0.0], [1.0, 2.0]]);
+        let prof = input.profile_curve().unwrap();
+        assert_eq!([prof.end(0), prof.end(1)], [GridEnd::Open, GridEnd::Open]);
+        let g = input.grid(&prof).unwrap();
+        assert_eq!(g.rings.len(), 17);
+        // Meridian 8 of 32 is a quarter turn.
+        assert!((g.rings[8][8] - DVec3::new(0.0, 1.0, 1.0)).length() < 1e-15);
+        let cone = RevolveInput::new(vec![[1.0, 0.0], [0.0, 2.0]]);
+        let prof = cone.profile_curve().unwrap();
+        assert_eq!(prof.end(1), GridEnd::Tip(DVec3::new(0.0, 0.0, 2.0)));
+        let g = cone.grid(&prof).unwrap();
+        assert_eq!(g.rings.len(), 16);
+        let p = g.rings[4][0];
+        assert!(
+            (p.x - 0.75).abs() < 1e-14 && (p.z - 0.5).abs() < 1e-14,
+            "{p}"
+        );
+    }
+
+    #[test]
+    fn partial_turn_is_open_and_corners_crease_rings() {
+        let mut input = RevolveInput::new(vec![[1.0, 0.0], [1.0, 1.0], [0.5, 1.5]]);
+        input.angle_deg = 90.0;
+        input.samples_around = 4;
+        let g = input.grid(&input.profile_curve().unwrap()).unwrap();
+        assert!(!g.ring_closed);
+        assert_eq!(g.rings[0].len(), 5);
+        let k = g.crease_rings[0];
+        assert_eq!(g.crease_rings.len(), 1);
+        assert_eq!(g.rings[k][0], DVec3::new(1.0, 0.0, 1.0));
+        assert!((g.rings[k][4] - DVec3::new(0.0, 1.0, 1.0)).length() < 1e-15);
+    }
+
+    #[test]
+    fn bad_revolutions_are_refused() {
+        let msg = |f: &dyn Fn(&mut RevolveInput)| {
+            let mut i = RevolveInput::new(semicircle(8, 1.0));
+            f(&mut i);
+            match i.profile_curve().and_then(|p| i.grid(&p)) {
+                Err(Error::InvalidArgument(m)) => m,
+                other => panic!("expected an error, got {other:?}"),
+            }
+        };
+        assert!(msg(&|i| i.profile[3][0] = -0.1).contains("crosses the axis"));
+        assert!(msg(&|i| i.profile[3][0] = 0.0).contains("on the axis; only"));
+        assert!(msg(&|i| i.samples_around = 30).contains("multiple of 4"));
+        assert!(msg(&|i| i.angle_deg = 180.0).contains("full turn"));
+        assert!(msg(&|i| i.angle_deg = 0.0).contains("(0, 360]"));
+        assert!(msg(&|i| i.profile = vec![[1.0, 0.0]]).contains("at least 2"));
+        assert!(msg(&|i| i.profile = vec![[1.0, 0.0], [1.0, f64::NAN]]).contains("not finite"));
+        assert!(
+            msg(&|i| i.profile = vec![[1.0, 0.0], [2.0, 1.0], [2.0, 0.0], [1.0, 1.0]])
+                .contains("crosses itself")
+        );
+        assert!(msg(&|i| i.samples_profile = 1).contains("at least 2 intervals"));
+        let e = RevolveInput::from_json(
+            r#"{"profile": [[1,0],[1,1]], "angle": 90}"#,
+            Path::new("r.json"),
+        )
+        .unwrap_err();
+        assert!(
+            matches!(e, Error::Parse { message, .. } if message.contains("unknown field `angle`"))
+        );
+    }
+}

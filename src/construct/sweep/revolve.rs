@@ -254,9 +254,11 @@ impl RevolveInput {
                          cap, which needs a multiple of 4"
                     )))
                 }
-                GridEnd::Tip(_) if na % 2 != 0 => return Err(Error::invalid_argument(format!(
+                GridEnd::Tip(_) if na % 2 != 0 => {
+                    return Err(Error::invalid_argument(format!(
                     "samples_around = {na}: a pointed pole (the {name} end) needs an even number"
-                ))),
+                )))
+                }
                 _ => {}
             }
         }

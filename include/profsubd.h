@@ -34,55 +34,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/**
- * `profsubd_options_set_boundary`: no boundary interpolation (boundary faces have no limit surface).
- */
-#define PROFSUBD_BOUNDARY_NONE 0
-
-/**
- * `profsubd_options_set_boundary`: boundary edges are infinitely sharp.
- */
-#define PROFSUBD_BOUNDARY_EDGE_ONLY 1
-
-/**
- * `profsubd_options_set_boundary`: boundary edges sharp and boundary vertices with one face
- * are sharp corners (the default).
- */
-#define PROFSUBD_BOUNDARY_EDGE_AND_CORNER 2
-
-/**
- * `profsubd_options_set_crease_method`: sharpness decreases by 1 per level (the default).
- */
-#define PROFSUBD_CREASE_UNIFORM 0
-
-/**
- * `profsubd_options_set_crease_method`: Chaikin's sharpness averaging.
- */
-#define PROFSUBD_CREASE_CHAIKIN 1
-
-/**
- * `profsubd_options_set_triangle_rule`: Catmull-Clark rule on triangles too (the default).
- */
-#define PROFSUBD_TRIANGLES_CATMARK 0
-
-/**
- * `profsubd_options_set_triangle_rule`: OpenSubdiv's smooth-triangle weights.
- */
-#define PROFSUBD_TRIANGLES_SMOOTH 1
-
-/**
- * Major version of the header (a test keeps it equal to the crate version).
- */
+/** Version of this header; compare with profsubd_version_major() etc. at run time. */
 #define PROFSUBD_VERSION_MAJOR 0
-
-/**
- * Minor version of the header.
- */
 #define PROFSUBD_VERSION_MINOR 1
-
-/**
- * Patch version of the header.
- */
 #define PROFSUBD_VERSION_PATCH 0
 
 /**
@@ -136,6 +90,52 @@ typedef enum profsubd_status {
      */
     PROFSUBD_ERROR_INTERNAL = 99,
 } profsubd_status;
+
+/**
+ * Values for `profsubd_options_set_boundary` (passed as `int32_t`).
+ */
+typedef enum profsubd_boundary {
+    /**
+     * No boundary interpolation: faces on the boundary have no limit surface.
+     */
+    PROFSUBD_BOUNDARY_NONE = 0,
+    /**
+     * Boundary edges are infinitely sharp.
+     */
+    PROFSUBD_BOUNDARY_EDGE_ONLY = 1,
+    /**
+     * Boundary edges sharp, and boundary vertices with one face are sharp corners (the default).
+     */
+    PROFSUBD_BOUNDARY_EDGE_AND_CORNER = 2,
+} profsubd_boundary;
+
+/**
+ * Values for `profsubd_options_set_crease_method` (passed as `int32_t`).
+ */
+typedef enum profsubd_crease_method {
+    /**
+     * Sharpness decreases by 1 per level (the default).
+     */
+    PROFSUBD_CREASE_UNIFORM = 0,
+    /**
+     * Chaikin's rule: child sharpness averages neighbouring crease sharpness.
+     */
+    PROFSUBD_CREASE_CHAIKIN = 1,
+} profsubd_crease_method;
+
+/**
+ * Values for `profsubd_options_set_triangle_rule` (passed as `int32_t`).
+ */
+typedef enum profsubd_triangle_rule {
+    /**
+     * The Catmull-Clark rule on triangles too (the default).
+     */
+    PROFSUBD_TRIANGLES_CATMARK = 0,
+    /**
+     * OpenSubdiv's smooth-triangle weights.
+     */
+    PROFSUBD_TRIANGLES_SMOOTH = 1,
+} profsubd_triangle_rule;
 
 /**
  * A validated control mesh (opaque, immutable, safe to share between threads). Create with
@@ -371,8 +371,9 @@ enum profsubd_status profsubd_options_set_triangle_rule(struct profsubd_options 
 const char *profsubd_status_string(int32_t status);
 
 /**
- * The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare with the
- * `PROFSUBD_VERSION_*` macros to check that the header and the loaded library agree.
+ * The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare
+ * `profsubd_version_major()` with the `PROFSUBD_VERSION_MAJOR` macro to check that the
+ * header and the loaded library agree.
  */
 const char *profsubd_version_string(void);
 

@@ -32,6 +32,31 @@ fn cdylib() -> PathBuf {
     lib
 }
 
+/// The SONAME recorded in the library (build.rs sets `libprofsubd.so.<major>`), if any.
+fn soname(lib: &Path) -> Option<String> {
+    let out = Command::new("objdump").arg("-p").arg(lib).output().ok()?;
+    String::from_utf8_lossy(&out.stdout).lines().find_map(|l| {
+        let mut f = l.split_whitespace();
+        (f.next() == Some("SONAME")).then(|| f.next().map(str::to_owned))?
+    })
+}
+
+/// A directory where the library is found under its file name and its SONAME, as an
+/// installed library is (the program records the SONAME and looks for it at run time).
+fn link_dir(lib: &Path, work: &Path) -> PathBuf {
+    let dir = work.join("lib");
+    std::fs::create_dir_all(&dir).unwrap();
+    let names = [lib.file_name().unwrap().to_string_lossy().into_owned()]
+        .into_iter()
+        .chain(soname(lib));
+    for name in names {
+        let link = dir.join(name);
+        let _ = std::fs::remove_file(&link);
+        std::os::unix::fs::symlink(lib, &link).unwrap();
+    }
+    dir
+}
+
 /// bindgen's Rust translation of the header.
 fn bindings() -> String {
     bindgen::Builder::default()
@@ -109,7 +134,7 @@ fn header_and_library_agree() {
     .unwrap();
 
     let program = work.join("calls");
-    let lib_dir = lib.parent().unwrap();
+    let lib_dir = link_dir(&lib, &work);
     let rustc = std::env::var("RUSTC").unwrap_or_else(|_| "rustc".into());
     let out = Command::new(rustc)
         .args(["--edition", "2021", "-o"])

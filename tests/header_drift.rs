@@ -90,3 +90,22 @@ fn header_declares_only_prefixed_names() {
          [export] exclude in cbindgen.toml (or make them non-public) and regenerate"
     );
 }
+
+/// The version macros written in cbindgen.toml follow Cargo.toml's version.
+#[test]
+fn version_macros_match_the_crate_version() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let header = generate(root);
+    for (part, value) in [
+        ("MAJOR", env!("CARGO_PKG_VERSION_MAJOR")),
+        ("MINOR", env!("CARGO_PKG_VERSION_MINOR")),
+        ("PATCH", env!("CARGO_PKG_VERSION_PATCH")),
+    ] {
+        let line = format!("#define PROFSUBD_VERSION_{part} {value}");
+        assert!(
+            header.lines().any(|l| l == line),
+            "the header lacks `{line}`: update after_includes in cbindgen.toml to the version \
+             in Cargo.toml, then run {REGENERATE}"
+        );
+    }
+}

@@ -34,6 +34,15 @@
 //! - **Enumerated inputs** are `int32_t` with named constants (`PROFSUBD_BOUNDARY_NONE`...); a
 //!   value out of range gives `PROFSUBD_ERROR_INVALID_ARGUMENT`.
 //!
+//! # Adding to the C API
+//!
+//! Put the functions in a file of this module; return [`profsubd_status`] through
+//! [`panic::status_call`]; check pointers with [`ptr`] and handles with [`handle`]; give named
+//! values as a `#[repr(C)]` enum (cbindgen is told to skip `const` items, so that constants of
+//! other modules never reach the header; list an enum no signature mentions under
+//! `[export] include` in `cbindgen.toml`); then regenerate the header with
+//! `cbindgen --config cbindgen.toml --output include/profsubd.h` and add bad-input tests.
+//!
 //! The Rust functions are `unsafe` because they trust these rules for the pointers they cannot
 //! check (a non-NULL pointer must point to as many readable or writable elements as its count
 //! says); clippy's per-function `# Safety` section is replaced by this list.

@@ -15,21 +15,37 @@ use crate::options::{
     BoundaryInterpolation, CreaseMethod, PartialOptions, SubdivOptions, TriangleSubdivision,
 };
 
-/// `profsubd_options_set_boundary`: no boundary interpolation (boundary faces have no limit surface).
-pub const PROFSUBD_BOUNDARY_NONE: i32 = 0;
-/// `profsubd_options_set_boundary`: boundary edges are infinitely sharp.
-pub const PROFSUBD_BOUNDARY_EDGE_ONLY: i32 = 1;
-/// `profsubd_options_set_boundary`: boundary edges sharp and boundary vertices with one face
-/// are sharp corners (the default).
-pub const PROFSUBD_BOUNDARY_EDGE_AND_CORNER: i32 = 2;
-/// `profsubd_options_set_crease_method`: sharpness decreases by 1 per level (the default).
-pub const PROFSUBD_CREASE_UNIFORM: i32 = 0;
-/// `profsubd_options_set_crease_method`: Chaikin's sharpness averaging.
-pub const PROFSUBD_CREASE_CHAIKIN: i32 = 1;
-/// `profsubd_options_set_triangle_rule`: Catmull-Clark rule on triangles too (the default).
-pub const PROFSUBD_TRIANGLES_CATMARK: i32 = 0;
-/// `profsubd_options_set_triangle_rule`: OpenSubdiv's smooth-triangle weights.
-pub const PROFSUBD_TRIANGLES_SMOOTH: i32 = 1;
+/// Values for `profsubd_options_set_boundary` (passed as `int32_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum profsubd_boundary {
+    /// No boundary interpolation: faces on the boundary have no limit surface.
+    PROFSUBD_BOUNDARY_NONE = 0,
+    /// Boundary edges are infinitely sharp.
+    PROFSUBD_BOUNDARY_EDGE_ONLY = 1,
+    /// Boundary edges sharp, and boundary vertices with one face are sharp corners (the default).
+    PROFSUBD_BOUNDARY_EDGE_AND_CORNER = 2,
+}
+
+/// Values for `profsubd_options_set_crease_method` (passed as `int32_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum profsubd_crease_method {
+    /// Sharpness decreases by 1 per level (the default).
+    PROFSUBD_CREASE_UNIFORM = 0,
+    /// Chaikin's rule: child sharpness averages neighbouring crease sharpness.
+    PROFSUBD_CREASE_CHAIKIN = 1,
+}
+
+/// Values for `profsubd_options_set_triangle_rule` (passed as `int32_t`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum profsubd_triangle_rule {
+    /// The Catmull-Clark rule on triangles too (the default).
+    PROFSUBD_TRIANGLES_CATMARK = 0,
+    /// OpenSubdiv's smooth-triangle weights.
+    PROFSUBD_TRIANGLES_SMOOTH = 1,
+}
 
 /// Subdivision and evaluation settings (opaque). Create with `profsubd_options_new`, release
 /// with `profsubd_options_free`. Functions taking a `const profsubd_options *` accept NULL,
@@ -92,10 +108,13 @@ pub unsafe extern "C" fn profsubd_options_set_boundary(
 ) -> profsubd_status {
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
+        use profsubd_boundary::*;
         o.subdiv.boundary = Some(match boundary {
-            PROFSUBD_BOUNDARY_NONE => BoundaryInterpolation::None,
-            PROFSUBD_BOUNDARY_EDGE_ONLY => BoundaryInterpolation::EdgeOnly,
-            PROFSUBD_BOUNDARY_EDGE_AND_CORNER => BoundaryInterpolation::EdgeAndCorner,
+            v if v == PROFSUBD_BOUNDARY_NONE as i32 => BoundaryInterpolation::None,
+            v if v == PROFSUBD_BOUNDARY_EDGE_ONLY as i32 => BoundaryInterpolation::EdgeOnly,
+            v if v == PROFSUBD_BOUNDARY_EDGE_AND_CORNER as i32 => {
+                BoundaryInterpolation::EdgeAndCorner
+            }
             v => return Err(out_of_range("boundary", v, "0, 1 or 2")),
         });
         Ok(())
@@ -110,9 +129,10 @@ pub unsafe extern "C" fn profsubd_options_set_crease_method(
 ) -> profsubd_status {
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
+        use profsubd_crease_method::*;
         o.subdiv.crease_method = Some(match method {
-            PROFSUBD_CREASE_UNIFORM => CreaseMethod::Uniform,
-            PROFSUBD_CREASE_CHAIKIN => CreaseMethod::Chaikin,
+            v if v == PROFSUBD_CREASE_UNIFORM as i32 => CreaseMethod::Uniform,
+            v if v == PROFSUBD_CREASE_CHAIKIN as i32 => CreaseMethod::Chaikin,
             v => return Err(out_of_range("crease method", v, "0 or 1")),
         });
         Ok(())
@@ -127,9 +147,10 @@ pub unsafe extern "C" fn profsubd_options_set_triangle_rule(
 ) -> profsubd_status {
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
+        use profsubd_triangle_rule::*;
         o.subdiv.triangles = Some(match rule {
-            PROFSUBD_TRIANGLES_CATMARK => TriangleSubdivision::Catmark,
-            PROFSUBD_TRIANGLES_SMOOTH => TriangleSubdivision::Smooth,
+            v if v == PROFSUBD_TRIANGLES_CATMARK as i32 => TriangleSubdivision::Catmark,
+            v if v == PROFSUBD_TRIANGLES_SMOOTH as i32 => TriangleSubdivision::Smooth,
             v => return Err(out_of_range("triangle rule", v, "0 or 1")),
         });
         Ok(())
@@ -142,6 +163,10 @@ mod tests {
     use crate::ffi::error::last_error;
     use crate::ffi::status::profsubd_status::*;
     use std::ptr::{null, null_mut};
+    const BOUNDARY_NONE: i32 = profsubd_boundary::PROFSUBD_BOUNDARY_NONE as i32;
+    const BOUNDARY_EDGE_ONLY: i32 = profsubd_boundary::PROFSUBD_BOUNDARY_EDGE_ONLY as i32;
+    const CREASE_CHAIKIN: i32 = profsubd_crease_method::PROFSUBD_CREASE_CHAIKIN as i32;
+    const TRIANGLES_SMOOTH: i32 = profsubd_triangle_rule::PROFSUBD_TRIANGLES_SMOOTH as i32;
 
     fn new_options() -> *mut profsubd_options {
         let mut o = null_mut();
@@ -158,16 +183,13 @@ mod tests {
                 handle::borrow(o, "o").unwrap().subdiv,
                 PartialOptions::default()
             );
+            assert_eq!(profsubd_options_set_boundary(o, BOUNDARY_NONE), PROFSUBD_OK);
             assert_eq!(
-                profsubd_options_set_boundary(o, PROFSUBD_BOUNDARY_NONE),
+                profsubd_options_set_crease_method(o, CREASE_CHAIKIN),
                 PROFSUBD_OK
             );
             assert_eq!(
-                profsubd_options_set_crease_method(o, PROFSUBD_CREASE_CHAIKIN),
-                PROFSUBD_OK
-            );
-            assert_eq!(
-                profsubd_options_set_triangle_rule(o, PROFSUBD_TRIANGLES_SMOOTH),
+                profsubd_options_set_triangle_rule(o, TRIANGLES_SMOOTH),
                 PROFSUBD_OK
             );
             let expected = PartialOptions {
@@ -177,7 +199,7 @@ mod tests {
             };
             assert_eq!(handle::borrow(o, "o").unwrap().subdiv, expected);
             assert_eq!(
-                profsubd_options_set_boundary(o, PROFSUBD_BOUNDARY_EDGE_ONLY),
+                profsubd_options_set_boundary(o, BOUNDARY_EDGE_ONLY),
                 PROFSUBD_OK
             );
             assert_eq!(
@@ -270,7 +292,7 @@ mod tests {
         let mesh = Mesh::from_parts(parts).unwrap();
         let o = new_options();
         unsafe {
-            profsubd_options_set_boundary(o, PROFSUBD_BOUNDARY_NONE);
+            profsubd_options_set_boundary(o, BOUNDARY_NONE);
             let r = resolve(o, &mesh).unwrap();
             assert_eq!(r.boundary, BoundaryInterpolation::None);
             assert_eq!(r.crease_method, CreaseMethod::Chaikin);

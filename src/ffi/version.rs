@@ -4,13 +4,6 @@ use std::ffi::c_char;
 
 use crate::ffi::panic::guard;
 
-/// Major version of the header (a test keeps it equal to the crate version).
-pub const PROFSUBD_VERSION_MAJOR: u32 = 0;
-/// Minor version of the header.
-pub const PROFSUBD_VERSION_MINOR: u32 = 1;
-/// Patch version of the header.
-pub const PROFSUBD_VERSION_PATCH: u32 = 0;
-
 const VERSION: &std::ffi::CStr = match std::ffi::CStr::from_bytes_with_nul(
     concat!(env!("CARGO_PKG_VERSION"), "\0").as_bytes(),
 ) {
@@ -30,8 +23,9 @@ const fn parse(s: &str) -> u32 {
     v
 }
 
-/// The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare with the
-/// `PROFSUBD_VERSION_*` macros to check that the header and the loaded library agree.
+/// The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare
+/// `profsubd_version_major()` with the `PROFSUBD_VERSION_MAJOR` macro to check that the
+/// header and the loaded library agree.
 #[no_mangle]
 pub extern "C" fn profsubd_version_string() -> *const c_char {
     guard(|| VERSION.as_ptr())
@@ -60,17 +54,16 @@ mod tests {
     use super::*;
 
     #[test]
-    fn header_constants_match_the_crate_version() {
-        // A failure here means Cargo.toml's version changed: update the constants above and
-        // regenerate include/profsubd.h.
-        assert_eq!(PROFSUBD_VERSION_MAJOR, profsubd_version_major());
-        assert_eq!(PROFSUBD_VERSION_MINOR, profsubd_version_minor());
-        assert_eq!(PROFSUBD_VERSION_PATCH, profsubd_version_patch());
+    fn functions_report_the_crate_version() {
         let s = unsafe { std::ffi::CStr::from_ptr(profsubd_version_string()) };
-        assert_eq!(
-            s.to_str().unwrap(),
-            format!("{PROFSUBD_VERSION_MAJOR}.{PROFSUBD_VERSION_MINOR}.{PROFSUBD_VERSION_PATCH}")
+        let expected = format!(
+            "{}.{}.{}",
+            profsubd_version_major(),
+            profsubd_version_minor(),
+            profsubd_version_patch()
         );
+        assert_eq!(s.to_str().unwrap(), expected);
+        assert_eq!(expected, env!("CARGO_PKG_VERSION"));
         assert_eq!(parse("120"), 120);
     }
 }

@@ -64,14 +64,15 @@ pub struct ObjRead {
 
 /// Read and parse the OBJ file at `path`; see the [module documentation](self).
 ///
-/// Errors: [`Error::Io`] if the file cannot be read or is not UTF-8, [`Error::Parse`] for a
+/// Errors: [`Error::Io`] if the file cannot be read, [`Error::Parse`] for a
 /// malformed file, [`Error::InvalidMesh`] for a mesh OpenSubdiv could not take.
 pub fn read_obj_file(path: &Path) -> Result<ObjRead> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+    let bytes = std::fs::read(path).map_err(|e| Error::Io {
         path: path.to_path_buf(),
         message: e.to_string(),
     })?;
-    parse_obj(&text, path)
+    // Bytes that are not UTF-8 can only matter in comments and names, which are ignored.
+    parse_obj(&String::from_utf8_lossy(&bytes), path)
 }
 
 /// Write `mesh` to `path` as OBJ with OpenSubdiv tags ([`to_obj_string`]).

@@ -18,6 +18,7 @@ use crate::options::{BoundaryInterpolation, CreaseMethod, TriangleSubdivision};
 /// with the file) for a file without faces.
 pub fn parse_obj(text: &str, path: &Path) -> Result<ObjRead> {
     let mut reader = Reader::new(path);
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     for (i, line) in text.lines().enumerate() {
         reader.line(i + 1, line)?;
     }

@@ -223,6 +223,19 @@ fn tags_referring_to_missing_components_name_their_line() {
 }
 
 #[test]
+fn byte_order_mark_crlf_and_stray_bytes_are_tolerated() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("bom.obj");
+    let mut bytes = "\u{feff}# caf".as_bytes().to_vec();
+    bytes.push(0xe9); // latin-1 in a comment
+    bytes.extend_from_slice(b"\r\nv 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n");
+    std::fs::write(&path, bytes).unwrap();
+    let read = read_obj_file(&path).unwrap();
+    assert!(read.warnings.is_empty(), "{:?}", read.warnings);
+    assert_eq!(read.mesh.face_indices(), &[0, 1, 2]);
+}
+
+#[test]
 fn reading_a_missing_file_is_an_io_error() {
     let e = read_obj_file(Path::new("/nonexistent/x.obj")).unwrap_err();
     assert!(matches!(e, Error::Io { ref path, .. } if path == Path::new("/nonexistent/x.obj")));

@@ -10,6 +10,7 @@
 
 pub mod check;
 pub mod convert;
+pub mod refine;
 
 use std::ffi::OsString;
 
@@ -57,6 +58,13 @@ pub enum Command {
     /// Tags that are ignored (face-varying, hierarchical edits, unknown) are reported on
     /// stderr and not written.
     Convert(convert::ConvertArgs),
+    /// Refine a mesh uniformly N times, in OpenSubdiv Far's order.
+    ///
+    /// Writes the refined mesh: vertices as Far numbers them (children of vertices, then of
+    /// faces, then of edges; --faces-first: faces, edges, vertices), faces in Far's order,
+    /// the decayed crease and corner sharpness and the holes as tags, and the options used
+    /// as tags. Positions equal OpenSubdiv's PrimvarRefiner in double precision.
+    Refine(refine::RefineArgs),
 }
 
 /// Subdivision option flags. Given on the command line they override the tags of the mesh
@@ -161,6 +169,7 @@ pub fn dispatch(command: &Command) -> Result<i32> {
     match command {
         Command::Check(args) => check::run(args),
         Command::Convert(args) => convert::run(args),
+        Command::Refine(args) => refine::run(args),
     }
 }
 

@@ -1,0 +1,57 @@
+//! `profsubd refine MESH.obj --level N -o OUT.obj`: uniform Catmull-Clark refinement in
+//! OpenSubdiv Far's vertex and face order, written with the decayed crease and corner tags.
+
+use std::path::PathBuf;
+
+use clap::Args;
+
+use super::{print_warnings, SubdivFlags};
+use crate::error::Result;
+use crate::io::obj::{read_obj_file, write_obj_file};
+use crate::refine::{refine_uniform_ordered, VertexOrder};
+
+/// Arguments of `refine`.
+#[derive(Debug, Args)]
+pub struct RefineArgs {
+    /// The OBJ mesh to refine.
+    #[arg(value_name = "MESH.obj")]
+    pub input: PathBuf,
+    /// Number of refinement levels (0 to 10).
+    #[arg(short, long, value_name = "N")]
+    pub level: u32,
+    /// The OBJ file to write.
+    #[arg(short, long, value_name = "OUT.obj")]
+    pub output: PathBuf,
+    /// Number child vertices of faces first, then of edges, then of vertices (Far's
+    /// `orderVerticesFromFacesFirst`); default: vertices, faces, edges.
+    #[arg(long)]
+    pub faces_first: bool,
+    /// Subdivision options.
+    #[command(flatten)]
+    pub options: SubdivFlags,
+}
+
+/// Run `refine`; returns exit code 0 on success.
+pub fn run(args: &RefineArgs) -> Result<i32> {
+    let read = read_obj_file(&args.input)?;
+    print_warnings(&read.warnings);
+    let options = args.options.partial().over(read.mesh.options()).resolve();
+    let order = if args.faces_first {
+        VertexOrder::FacesFirst
+    } else {
+        VertexOrder::VerticesFirst
+    };
+    let refined = refine_uniform_ordered(&read.mesh, &options, args.level, order)?;
+    write_obj_file(&refined, &args.output)?;
+    println!(
+        "wrote {} (level {}: {} vertices, {} faces, {} creases, {} corners, {} holes)",
+        args.output.display(),
+        args.level,
+        refined.num_vertices(),
+        refined.num_faces(),
+        refined.creases().len(),
+        refined.corners().len(),
+        refined.holes().len()
+    );
+    Ok(0)
+}

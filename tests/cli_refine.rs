@@ -1,0 +1,85 @@
+//! `profsubd refine` on real files: the written mesh equals the library's refinement, tags
+//! carry the decayed sharpness, bad input gives a clear error.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use profsubd::io::obj::read_obj_file;
+use profsubd::refine::refine_uniform;
+use profsubd::{BoundaryInterpolation, SubdivOptions};
+
+fn profsubd(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_profsubd"))
+        .args(args)
+        .output()
+        .expect("run profsubd")
+}
+
+fn example(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/meshes")
+        .join(name)
+}
+
+#[test]
+fn refine_writes_far_ordered_mesh_with_decayed_tags() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("r.obj");
+    let input = example("cube_creased.obj");
+    let o = profsubd(&[
+        "refine",
+        input.to_str().unwrap(),
+        "--level",
+        "2",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let written = read_obj_file(&out).unwrap().mesh;
+    assert_eq!(written.num_vertices(), 98);
+    assert_eq!(written.num_faces(), 96);
+    // Top creases (2) have decayed to 0; the infinitely sharp edge is 4 edges of 10;
+    // the corner of sharpness 3 is now 1.
+    assert_eq!(written.creases().len(), 4);
+    assert!(written.creases().iter().all(|c| c.sharpness == 10.0));
+    assert_eq!(written.corners().len(), 1);
+    assert_eq!(written.corners()[0].vertex, 2);
+    assert_eq!(written.corners()[0].sharpness, 1.0);
+    let base = read_obj_file(&input).unwrap().mesh;
+    let lib = refine_uniform(&base, &base.options().resolve(), 2).unwrap();
+    assert_eq!(written.positions(), lib.positions());
+    assert_eq!(written.face_indices(), lib.face_indices());
+    assert_eq!(
+        written.options().boundary,
+        Some(BoundaryInterpolation::EdgeAndCorner)
+    );
+    assert_eq!(lib.options().resolve(), SubdivOptions::default());
+}
+
+#[test]
+fn refine_rejects_bad_input() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("r.obj");
+    let input = example("cube_creased.obj");
+    let o = profsubd(&[
+        "refine",
+        input.to_str().unwrap(),
+        "--level",
+        "11",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("above the maximum 10"));
+    let o = profsubd(&[
+        "refine",
+        "/nonexistent/mesh.obj",
+        "--level",
+        "1",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("/nonexistent/mesh.obj"));
+    assert!(!out.exists());
+}

@@ -1,0 +1,540 @@
+//! Exact limit positions and derivatives at the control vertices, as stencils.
+//!
+//! For each control vertex:
+//! - infinitely sharp corners (vertex sharpness infinite, three or more infinitely sharp
+//!   edges, boundary corners under edge-and-corner, non-manifold vertices as Far sharpens
+//!   them) stay where they are;
+//! - a manifold vertex's one-ring is refined with OpenSubdiv's rules (see [`super::vertex_ring`])
+//!   until the sharpness around it is 0 or infinite and every face is a quad, then the limit
+//!   mask of its rule is applied: smooth `(n² v + 4 Σ e + Σ f) / (n (n + 5))`, crease
+//!   `(e_a + 4 v + e_b) / 6`, and for darts (exactly one sharp edge), which have no closed
+//!   form, the left eigenvector of eigenvalue 1 of the ring's subdivision matrix;
+//! - the vertex of a non-manifold crease follows the crease curve alone.
+//!
+//! This is the true limit everywhere, including where OpenSubdiv 3.5's `Bfr` and
+//! `PrimvarRefiner::Limit` are not (darts, level-0 semi-sharp features, interior valence-2
+//! vertices).
+//!
+//! Derivatives are reported at the corner of the vertex's *first face*: the first face in
+//! OpenSubdiv's vertex-face order (`Far::TopologyLevel::GetVertexFaces(v)[0]`, counter-clockwise
+//! for manifold vertices, starting at the leading boundary face on a boundary) that is not a
+//! hole, or the first face if all are holes. `du` and `dv` are in that face's parameterization
+//! as `Bfr::Surface` has it: for a quad, corner `k` at (0,0), (1,0), (1,1), (0,1); for any
+//! other face, sub-face `k` of its quadrangulation with local (0,0) at the vertex, `u`
+//! towards the midpoint of the edge to the next vertex and `v` towards the midpoint of the
+//! edge from the previous vertex. They are exact (equal to the bicubic patch's) at regular
+//! vertices: smooth valence 4, crease sectors of two faces, single-face corners, after any
+//! semi-sharp sharpness has decayed. Elsewhere the *direction* they span is OpenSubdiv's limit
+//! tangent plane (`Sdc` tangent masks: the exact plane at smooth extraordinary vertices) and
+//! their lengths are a convention (the masks scaled by 1/12 at the level where the
+//! neighbourhood became stationary, times 2^level), since the limit parameterization has a
+//! zero or unbounded derivative at an extraordinary vertex. At darts, interior valence-2
+//! vertices, crease sectors of other than two faces and corners whose first face has a
+//! smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are approximate there.
+
+use crate::error::Result;
+use crate::mesh::Mesh;
+use crate::options::SubdivOptions;
+
+use super::incidence::Incidence;
+use super::rules;
+use super::sample::LimitSample;
+use super::stencil::StencilTable;
+use super::vertex_ring::{self, sub, CreaseLine, Point, Ring, MAX_LEVELS};
+
+/// Limit position, `du` and `dv` stencils of every control vertex, rows in vertex order.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct VertexLimitStencils {
+    /// Limit positions.
+    pub position: StencilTable,
+    /// Derivative with respect to u at the corner of the vertex's first face.
+    pub du: StencilTable,
+    /// Derivative with respect to v at the corner of the vertex's first face.
+    pub dv: StencilTable,
+}
+
+/// Exact limit position of every control vertex as a stencil on the control vertices (one
+/// row per vertex, in vertex order).
+///
+/// Errors ([`crate::Error::NumericalFailure`]): a dart's subdivision matrix is degenerate
+/// (not seen with OpenSubdiv's rules).
+pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTable> {
+    let inc = Incidence::new(mesh, options);
+    let mut table = StencilTable::new();
+    for v in 0..mesh.num_vertices() as u32 {
+        let local = Local::new(mesh, &inc, v);
+        let (p, _) = vertex_limit(mesh, options, &inc, &local, v, false)?;
+        table.push_row(local.sparse(&p));
+    }
+    Ok(table)
+}
+
+/// Limit position and derivative stencils of every control vertex (see the module doc for
+/// the derivatives' convention).
+///
+/// Errors: as [`limit_stencils`].
+pub fn vertex_limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<VertexLimitStencils> {
+    let inc = Incidence::new(mesh, options);
+    let mut out = VertexLimitStencils {
+        position: StencilTable::new(),
+        du: StencilTable::new(),
+        dv: StencilTable::new(),
+    };
+    for v in 0..mesh.num_vertices() as u32 {
+        let local = Local::new(mesh, &inc, v);
+        let (p, d) = vertex_limit(mesh, options, &inc, &local, v, true)?;
+        let (du, dv) = d.unwrap_or_else(|| (vec![0.0; p.len()], vec![0.0; p.len()]));
+        out.position.push_row(local.sparse(&p));
+        out.du.push_row(local.sparse(&du));
+        out.dv.push_row(local.sparse(&dv));
+    }
+    Ok(out)
+}
+
+/// Limit position and derivatives at every control vertex, in vertex order (see the module
+/// doc for the derivatives' convention; [`LimitSample::normal`] gives the unit normal).
+///
+/// Errors: as [`limit_stencils`].
+pub fn limit_vertex_samples(mesh: &Mesh, options: &SubdivOptions) -> Result<Vec<LimitSample>> {
+    let st = vertex_limit_stencils(mesh, options)?;
+    let p = mesh.positions();
+    Ok((0..mesh.num_vertices())
+        .map(|i| LimitSample {
+            position: st.position.apply_row(i, p),
+            du: st.du.apply_row(i, p),
+            dv: st.dv.apply_row(i, p),
+        })
+        .collect())
+}
+
+/// The local basis of a vertex: the control vertices of its faces (and of its edges, for
+/// isolated or non-manifold ones), sorted.
+struct Local {
+    globals: Vec<u32>,
+}
+
+impl Local {
+    fn new(mesh: &Mesh, inc: &Incidence, v: u32) -> Local {
+        let mut globals = vec![v];
+        for &f in &inc.vert_faces[v as usize] {
+            globals.extend_from_slice(mesh.face(f as usize));
+        }
+        for &e in &inc.vert_edges[v as usize] {
+            globals.push(inc.other_end(e, v));
+        }
+        globals.sort_unstable();
+        globals.dedup();
+        Local { globals }
+    }
+
+    fn unit(&self, g: u32) -> Point {
+        let mut p = vec![0.0; self.globals.len()];
+        p[self
+            .globals
+            .binary_search(&g)
+            .expect("vertex in its own neighbourhood")] = 1.0;
+        p
+    }
+
+    fn sparse<'a>(&'a self, p: &'a [f64]) -> impl Iterator<Item = (u32, f64)> + 'a {
+        self.globals
+            .iter()
+            .zip(p)
+            .filter(|(_, &w)| w != 0.0)
+            .map(|(&g, &w)| (g, w))
+    }
+}
+
+type Derivatives = Option<(Point, Point)>;
+
+fn vertex_limit(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    inc: &Incidence,
+    local: &Local,
+    v: u32,
+    with_derivatives: bool,
+) -> Result<(Point, Derivatives)> {
+    let faces = &inc.vert_faces[v as usize];
+    let holes = mesh.holes();
+    let first = faces.iter().position(|f| !holes.contains(f)).unwrap_or(0);
+    let center = local.unit(v);
+    if faces.is_empty() {
+        // An isolated vertex has no limit surface; it stays put.
+        return Ok((center, None));
+    }
+    let face = mesh.face(faces[first] as usize);
+    let corner = face.iter().position(|&x| x == v).unwrap_or(0);
+    let edge_derivatives = || {
+        // Derivatives along the first face's edges at the vertex: exact at a corner whose
+        // two edges there are sharp.
+        let n = face.len();
+        let here = local.unit(v);
+        let next = sub(&local.unit(face[(corner + 1) % n]), &here);
+        let prev = sub(&local.unit(face[(corner + n - 1) % n]), &here);
+        let scale = if n == 4 { 1.0 } else { 0.5 };
+        orient(n, corner, next, prev, scale)
+    };
+    if inc.is_permanent_corner(v) {
+        return Ok((center, with_derivatives.then(edge_derivatives)));
+    }
+    if inc.vert_nonmanifold[v as usize] {
+        let sharpness = inc.incident_sharpness(v);
+        let ends: Vec<Point> = inc.vert_edges[v as usize]
+            .iter()
+            .zip(&sharpness)
+            .filter(|(_, &s)| rules::is_infinite(s))
+            .map(|(&e, _)| local.unit(inc.other_end(e, v)))
+            .collect();
+        let line = CreaseLine {
+            center,
+            ends: [ends[0].clone(), ends[1].clone()],
+            sharpness,
+            vertex_sharpness: inc.vert_sharpness[v as usize],
+        };
+        let p = line.limit(options.crease_method)?;
+        return Ok((p, with_derivatives.then(edge_derivatives)));
+    }
+    let mut ring = level0_ring(mesh, inc, local, v);
+    while !ring.is_stationary() {
+        if ring.level >= MAX_LEVELS {
+            return Err(vertex_ring::too_deep());
+        }
+        ring = ring.refine(options);
+    }
+    let p = ring.limit()?;
+    if !with_derivatives {
+        return Ok((p, None));
+    }
+    let (next, prev) = ring.tangents(first);
+    let n = face.len();
+    let level_scale = (2.0f64).powi(ring.level as i32);
+    let scale = if n == 4 {
+        level_scale
+    } else {
+        0.5 * level_scale
+    };
+    Ok((p, Some(orient(n, corner, next, prev, scale))))
+}
+
+/// `(du, dv)` at `corner` of a face of size `n` from the derivatives towards the next and
+/// previous corners.
+fn orient(n: usize, corner: usize, next: Point, prev: Point, scale: f64) -> (Point, Point) {
+    let s = |p: &Point, w: f64| -> Point { p.iter().map(|x| x * w * scale).collect() };
+    if n != 4 {
+        return (s(&next, 1.0), s(&prev, 1.0));
+    }
+    match corner {
+        0 => (s(&next, 1.0), s(&prev, 1.0)),
+        1 => (s(&prev, -1.0), s(&next, 1.0)),
+        2 => (s(&next, -1.0), s(&prev, -1.0)),
+        _ => (s(&prev, 1.0), s(&next, -1.0)),
+    }
+}
+
+/// The level-0 one-ring of a manifold vertex, from the ordered incidence.
+fn level0_ring(mesh: &Mesh, inc: &Incidence, local: &Local, v: u32) -> Ring {
+    let edges = &inc.vert_edges[v as usize];
+    let ends: Vec<Point> = edges
+        .iter()
+        .map(|&e| local.unit(inc.other_end(e, v)))
+        .collect();
+    let faces = inc.vert_faces[v as usize]
+        .iter()
+        .map(|&f| {
+            let fv = mesh.face(f as usize);
+            let c = fv.iter().position(|&x| x == v).unwrap();
+            (1..fv.len())
+                .map(|k| local.unit(fv[(c + k) % fv.len()]))
+                .collect()
+        })
+        .collect();
+    Ring {
+        center: local.unit(v),
+        ends,
+        sharpness: inc.incident_sharpness(v),
+        far_sharpness: edges
+            .iter()
+            .map(|&e| inc.incident_sharpness(inc.other_end(e, v)))
+            .collect(),
+        faces,
+        vertex_sharpness: inc.vert_sharpness[v as usize],
+        level: 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::DVec3;
+
+    use super::*;
+    use crate::mesh::{Corner, Crease, MeshParts};
+    use crate::options::{BoundaryInterpolation, CreaseMethod};
+
+    /// An `nx × ny` grid of quads on z = height(i, j).
+    fn grid(nx: u32, ny: u32, height: impl Fn(u32, u32) -> f64) -> MeshParts {
+        let mut p = MeshParts::default();
+        for j in 0..=ny {
+            for i in 0..=nx {
+                p.positions
+                    .push(DVec3::new(i as f64, j as f64, height(i, j)));
+            }
+        }
+        let id = |i: u32, j: u32| j * (nx + 1) + i;
+        for j in 0..ny {
+            for i in 0..nx {
+                p.face_sizes.push(4);
+                p.face_indices
+                    .extend([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+            }
+        }
+        p
+    }
+
+    fn bumpy(i: u32, j: u32) -> f64 {
+        ((i * 7 + j * 13) % 5) as f64 * 0.3 - (i * j % 3) as f64 * 0.2
+    }
+
+    fn cube() -> MeshParts {
+        let mut p = MeshParts::default();
+        for k in 0..8 {
+            p.positions.push(DVec3::new(
+                (k & 1) as f64,
+                ((k >> 1) & 1) as f64,
+                ((k >> 2) & 1) as f64 * 1.3,
+            ));
+        }
+        for f in [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ] {
+            p.face_sizes.push(4);
+            p.face_indices.extend(f);
+        }
+        p
+    }
+
+    fn close(a: DVec3, b: DVec3, tol: f64) -> bool {
+        (a - b).length() <= tol
+    }
+
+    #[test]
+    fn regular_grid_vertex_is_the_bicubic_spline_value_and_derivative() {
+        let mesh = Mesh::from_parts(grid(4, 4, bumpy)).unwrap();
+        let s = limit_vertex_samples(&mesh, &SubdivOptions::default()).unwrap();
+        let w = [1.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0];
+        let d = [-0.5, 0.0, 0.5];
+        let at = |i: u32, j: u32| mesh.positions()[(j * 5 + i) as usize];
+        for (ci, cj) in [(1, 1), (2, 2), (3, 1), (2, 3)] {
+            let (mut p, mut du, mut dv) = (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO);
+            for a in 0..3 {
+                for b in 0..3 {
+                    let q = at(ci + a - 1, cj + b - 1);
+                    p += q * w[a as usize] * w[b as usize];
+                    du += q * d[a as usize] * w[b as usize];
+                    dv += q * w[a as usize] * d[b as usize];
+                }
+            }
+            let v = (cj * 5 + ci) as usize;
+            let got = s[v];
+            assert!(close(got.position, p, 1e-15), "{v}: {got:?} vs {p}");
+            // The first face of an interior vertex is its lowest-numbered face, where the
+            // vertex is corner 2 ((1,1) of the face); u and v run along x and y.
+            assert!(close(got.du, du, 1e-14), "{v}: {:?} vs {du}", got.du);
+            assert!(close(got.dv, dv, 1e-14), "{v}: {:?} vs {dv}", got.dv);
+        }
+    }
+
+    #[test]
+    fn boundary_rules_give_crease_and_corner_limits() {
+        let parts = grid(3, 2, bumpy);
+        let p = parts.positions.clone();
+        let mesh = Mesh::from_parts(parts).unwrap();
+        let edge_only = SubdivOptions {
+            boundary: BoundaryInterpolation::EdgeOnly,
+            ..SubdivOptions::default()
+        };
+        let t = limit_stencils(&mesh, &edge_only).unwrap();
+        let lim = t.apply(&p).unwrap();
+        // boundary vertex 1 between 0 and 2: cubic B-spline along the boundary
+        assert!(close(lim[1], (p[0] + p[1] * 4.0 + p[2]) / 6.0, 1e-15));
+        // corner vertex 0 with one face under edge-only: crease through its two edges
+        assert!(close(lim[0], (p[1] + p[0] * 4.0 + p[4]) / 6.0, 1e-15));
+        let t = limit_stencils(&mesh, &SubdivOptions::default()).unwrap();
+        assert_eq!(t.row(0), (&[0u32][..], &[1.0][..]));
+        // under "none" boundary edges are still sharp for vertex data
+        let none = SubdivOptions {
+            boundary: BoundaryInterpolation::None,
+            ..SubdivOptions::default()
+        };
+        assert_eq!(limit_stencils(&mesh, &none).unwrap(), {
+            limit_stencils(&mesh, &edge_only).unwrap()
+        });
+    }
+
+    #[test]
+    fn closed_form_smooth_limit_equals_the_eigenvector_for_every_valence() {
+        for n in 2..=9usize {
+            let ring = synthetic_ring(n, &vec![0.0; n], 0.0);
+            let a = ring.limit().unwrap();
+            let b = ring.eigen_limit().unwrap();
+            let err = a
+                .iter()
+                .zip(&b)
+                .map(|(x, y)| (x - y).abs())
+                .fold(0.0, f64::max);
+            assert!(err < 1e-15, "valence {n}: {a:?} vs {b:?}");
+        }
+    }
+
+    /// Ring with unit-vector points: centre 0, edge ends 1..=n, opposite corners n+1..=2n.
+    fn synthetic_ring(n: usize, sharpness: &[f32], vertex_sharpness: f32) -> Ring {
+        let m = 1 + 2 * n;
+        let unit = |k: usize| {
+            let mut p = vec![0.0; m];
+            p[k] = 1.0;
+            p
+        };
+        Ring {
+            center: unit(0),
+            ends: (0..n).map(|i| unit(1 + i)).collect(),
+            sharpness: sharpness.to_vec(),
+            far_sharpness: sharpness.iter().map(|&s| vec![s, 0.0, 0.0, 0.0]).collect(),
+            faces: (0..n)
+                .map(|i| vec![unit(1 + i), unit(1 + n + i), unit(1 + (i + 1) % n)])
+                .collect(),
+            vertex_sharpness,
+            level: 0,
+        }
+    }
+
+    /// Refine a ring `levels` times and return its centre: converges to the limit.
+    fn deep_center(mut ring: Ring, levels: u32, options: &SubdivOptions) -> Point {
+        for _ in 0..levels {
+            ring = ring.refine(options);
+        }
+        ring.center
+    }
+
+    fn max_diff(a: &[f64], b: &[f64]) -> f64 {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn dart_and_semi_sharp_limits_match_deep_refinement() {
+        let opts = SubdivOptions::default();
+        let chaikin = SubdivOptions {
+            crease_method: CreaseMethod::Chaikin,
+            ..opts
+        };
+        let cases: Vec<(usize, Vec<f32>, f32)> = vec![
+            (5, vec![10.0, 0.0, 0.0, 0.0, 0.0], 0.0),
+            (3, vec![10.0, 0.0, 0.0], 0.0),
+            (2, vec![10.0, 0.0], 0.0),
+            (6, vec![1.5, 0.0, 2.7, 0.0, 0.3, 0.0], 0.0),
+            (4, vec![1.5, 0.0, 0.0, 0.0], 2.25),
+            (4, vec![10.0, 0.0, 0.4, 0.0], 0.0),
+            (3, vec![3.0, 10.0, 10.0], 0.0),
+        ];
+        for (n, sharp, vs) in cases {
+            for o in [&opts, &chaikin] {
+                let mut ring = synthetic_ring(n, &sharp, vs);
+                let deep = deep_center(ring.clone(), 90, o);
+                while !ring.is_stationary() {
+                    ring = ring.refine(o);
+                }
+                let lim = ring.limit().unwrap();
+                assert!(
+                    max_diff(&lim, &deep) < 1e-14,
+                    "n={n} {sharp:?} {vs}: {lim:?} vs {deep:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn crease_line_agrees_with_the_ring_for_manifold_creases() {
+        let opts = SubdivOptions::default();
+        let sharp = vec![10.0, 0.7, 10.0, 0.0, 1.6];
+        let mut ring = synthetic_ring(5, &sharp, 1.3);
+        let line = CreaseLine {
+            center: ring.center.clone(),
+            ends: [ring.ends[0].clone(), ring.ends[2].clone()],
+            sharpness: sharp.clone(),
+            vertex_sharpness: 1.3,
+        };
+        let a = line.limit(opts.crease_method).unwrap();
+        while !ring.is_stationary() {
+            ring = ring.refine(&opts);
+        }
+        assert!(max_diff(&a, &ring.limit().unwrap()) < 1e-15);
+    }
+
+    #[test]
+    fn closed_cube_with_tags_matches_deep_refinement_of_each_ring() {
+        let mut parts = cube();
+        parts.creases.push(Crease {
+            vertices: [0, 2],
+            sharpness: 1.5,
+        });
+        parts.creases.push(Crease {
+            vertices: [7, 5],
+            sharpness: 10.0,
+        });
+        parts.corners.push(Corner {
+            vertex: 3,
+            sharpness: 0.5,
+        });
+        let mesh = Mesh::from_parts(parts).unwrap();
+        let t = limit_stencils(&mesh, &SubdivOptions::default()).unwrap();
+        let inc = Incidence::new(&mesh, &SubdivOptions::default());
+        for v in 0..8u32 {
+            let local = Local::new(&mesh, &inc, v);
+            let ring = level0_ring(&mesh, &inc, &local, v);
+            let deep = deep_center(ring, 90, &SubdivOptions::default());
+            let row: Vec<(u32, f64)> = local.sparse(&deep).collect();
+            let (idx, w) = t.row(v as usize);
+            assert_eq!(idx, row.iter().map(|r| r.0).collect::<Vec<_>>());
+            let err = w
+                .iter()
+                .zip(&row)
+                .map(|(a, b)| (a - b.1).abs())
+                .fold(0.0, f64::max);
+            assert!(err < 1e-14, "vertex {v}: {w:?} vs {row:?}");
+            assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn non_quads_and_isolated_vertices() {
+        // A pyramid: square base, four triangles; apex valence 4 over triangles.
+        let parts = MeshParts {
+            positions: vec![
+                DVec3::new(0.0, 0.0, 0.0),
+                DVec3::new(1.0, 0.0, 0.0),
+                DVec3::new(1.0, 1.0, 0.0),
+                DVec3::new(0.0, 1.0, 0.0),
+                DVec3::new(0.5, 0.5, 1.0),
+                DVec3::new(9.0, 9.0, 9.0),
+            ],
+            face_sizes: vec![4, 3, 3, 3, 3],
+            face_indices: vec![0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4],
+            ..MeshParts::default()
+        };
+        let mesh = Mesh::from_parts(parts).unwrap();
+        let s = limit_vertex_samples(&mesh, &SubdivOptions::default()).unwrap();
+        // symmetric: apex limit on the axis, normal up
+        assert!((s[4].position.x - 0.5).abs() < 1e-15 && (s[4].position.y - 0.5).abs() < 1e-15);
+        assert!(s[4].position.z < 1.0 && s[4].position.z > 0.0);
+        assert!(s[4].normal().z > 0.999_999, "{:?}", s[4].normal());
+        // the isolated vertex stays put
+        assert_eq!(s[5].position, DVec3::splat(9.0));
+    }
+}

@@ -7,8 +7,6 @@
 //! - [`StencilTable`], [`LimitSample`]: the shared result types.
 
 mod dense;
-mod incidence;
-mod rules;
 pub mod sample;
 pub mod stencil;
 pub mod vertex_limit;

@@ -36,11 +36,11 @@ use crate::error::Result;
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
 
-use super::incidence::Incidence;
-use super::rules;
 use super::sample::LimitSample;
 use super::stencil::StencilTable;
 use super::vertex_ring::{self, sub, CreaseLine, Point, Ring, MAX_LEVELS};
+use crate::catmark::crease::is_infinite;
+use crate::topology::Level;
 
 /// Limit position, `du` and `dv` stencils of every control vertex, rows in vertex order.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -59,11 +59,11 @@ pub struct VertexLimitStencils {
 /// Errors ([`crate::Error::NumericalFailure`]): a dart's subdivision matrix is degenerate
 /// (not seen with OpenSubdiv's rules).
 pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTable> {
-    let inc = Incidence::new(mesh, options);
+    let level = Level::from_mesh_with_options(mesh, options);
     let mut table = StencilTable::new();
     for v in 0..mesh.num_vertices() as u32 {
-        let local = Local::new(mesh, &inc, v);
-        let (p, _) = vertex_limit(mesh, options, &inc, &local, v, false)?;
+        let local = Local::new(&level, v);
+        let (p, _) = vertex_limit(options, &level, &local, v, false)?;
         table.push_row(local.sparse(&p));
     }
     Ok(table)
@@ -74,15 +74,15 @@ pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTab
 ///
 /// Errors: as [`limit_stencils`].
 pub fn vertex_limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<VertexLimitStencils> {
-    let inc = Incidence::new(mesh, options);
+    let level = Level::from_mesh_with_options(mesh, options);
     let mut out = VertexLimitStencils {
         position: StencilTable::new(),
         du: StencilTable::new(),
         dv: StencilTable::new(),
     };
     for v in 0..mesh.num_vertices() as u32 {
-        let local = Local::new(mesh, &inc, v);
-        let (p, d) = vertex_limit(mesh, options, &inc, &local, v, true)?;
+        let local = Local::new(&level, v);
+        let (p, d) = vertex_limit(options, &level, &local, v, true)?;
         let (du, dv) = d.unwrap_or_else(|| (vec![0.0; p.len()], vec![0.0; p.len()]));
         out.position.push_row(local.sparse(&p));
         out.du.push_row(local.sparse(&du));
@@ -114,13 +114,13 @@ struct Local {
 }
 
 impl Local {
-    fn new(mesh: &Mesh, inc: &Incidence, v: u32) -> Local {
+    fn new(level: &Level, v: u32) -> Local {
         let mut globals = vec![v];
-        for &f in &inc.vert_faces[v as usize] {
-            globals.extend_from_slice(mesh.face(f as usize));
+        for &f in level.vertex_faces(v as usize) {
+            globals.extend_from_slice(level.face_vertices(f as usize));
         }
-        for &e in &inc.vert_edges[v as usize] {
-            globals.push(inc.other_end(e, v));
+        for &e in level.vertex_edges(v as usize) {
+            globals.extend_from_slice(&level.edge_vertices(e as usize));
         }
         globals.sort_unstable();
         globals.dedup();
@@ -148,23 +148,25 @@ impl Local {
 type Derivatives = Option<(Point, Point)>;
 
 fn vertex_limit(
-    mesh: &Mesh,
     options: &SubdivOptions,
-    inc: &Incidence,
+    level: &Level,
     local: &Local,
     v: u32,
     with_derivatives: bool,
 ) -> Result<(Point, Derivatives)> {
-    let faces = &inc.vert_faces[v as usize];
-    let holes = mesh.holes();
-    let first = faces.iter().position(|f| !holes.contains(f)).unwrap_or(0);
+    let vi = v as usize;
+    let faces = level.vertex_faces(vi);
     let center = local.unit(v);
     if faces.is_empty() {
         // An isolated vertex has no limit surface; it stays put.
         return Ok((center, None));
     }
-    let face = mesh.face(faces[first] as usize);
-    let corner = face.iter().position(|&x| x == v).unwrap_or(0);
+    let first = faces
+        .iter()
+        .position(|&f| !level.is_face_hole(f as usize))
+        .unwrap_or(0);
+    let face = level.face_vertices(faces[first] as usize);
+    let corner = level.vertex_face_local_indices(vi)[first] as usize;
     let edge_derivatives = || {
         // Derivatives along the first face's edges at the vertex: exact at a corner whose
         // two edges there are sharp.
@@ -175,27 +177,34 @@ fn vertex_limit(
         let scale = if n == 4 { 1.0 } else { 0.5 };
         orient(n, corner, next, prev, scale)
     };
-    if inc.is_permanent_corner(v) {
+    let sharpness = incident_sharpness(level, v);
+    let infinite_edges = sharpness.iter().filter(|&&s| is_infinite(s)).count();
+    if is_infinite(level.vertex_sharpness(vi)) || infinite_edges > 2 {
+        // A corner for ever: the limit is the vertex itself.
         return Ok((center, with_derivatives.then(edge_derivatives)));
     }
-    if inc.vert_nonmanifold[v as usize] {
-        let sharpness = inc.incident_sharpness(v);
-        let ends: Vec<Point> = inc.vert_edges[v as usize]
+    if level.is_vertex_non_manifold(vi) {
+        // Far leaves only non-manifold creases unsharpened: two infinitely sharp edges.
+        let ends: Vec<Point> = level
+            .vertex_edges(vi)
             .iter()
             .zip(&sharpness)
-            .filter(|(_, &s)| rules::is_infinite(s))
-            .map(|(&e, _)| local.unit(inc.other_end(e, v)))
+            .filter(|(_, &s)| is_infinite(s))
+            .map(|(&e, _)| local.unit(other_end(level, e, v)))
             .collect();
+        if ends.len() != 2 {
+            return Ok((center, with_derivatives.then(edge_derivatives)));
+        }
         let line = CreaseLine {
             center,
             ends: [ends[0].clone(), ends[1].clone()],
             sharpness,
-            vertex_sharpness: inc.vert_sharpness[v as usize],
+            vertex_sharpness: level.vertex_sharpness(vi),
         };
         let p = line.limit(options.crease_method)?;
         return Ok((p, with_derivatives.then(edge_derivatives)));
     }
-    let mut ring = level0_ring(mesh, inc, local, v);
+    let mut ring = level0_ring(level, local, v);
     while !ring.is_stationary() {
         if ring.level >= MAX_LEVELS {
             return Err(vertex_ring::too_deep());
@@ -217,6 +226,23 @@ fn vertex_limit(
     Ok((p, Some(orient(n, corner, next, prev, scale))))
 }
 
+fn other_end(level: &Level, e: u32, v: u32) -> u32 {
+    let [a, b] = level.edge_vertices(e as usize);
+    if a == v {
+        b
+    } else {
+        a
+    }
+}
+
+fn incident_sharpness(level: &Level, v: u32) -> Vec<f32> {
+    level
+        .vertex_edges(v as usize)
+        .iter()
+        .map(|&e| level.edge_sharpness(e as usize))
+        .collect()
+}
+
 /// `(du, dv)` at `corner` of a face of size `n` from the derivatives towards the next and
 /// previous corners.
 fn orient(n: usize, corner: usize, next: Point, prev: Point, scale: f64) -> (Point, Point) {
@@ -232,33 +258,34 @@ fn orient(n: usize, corner: usize, next: Point, prev: Point, scale: f64) -> (Poi
     }
 }
 
-/// The level-0 one-ring of a manifold vertex, from the ordered incidence.
-fn level0_ring(mesh: &Mesh, inc: &Incidence, local: &Local, v: u32) -> Ring {
-    let edges = &inc.vert_edges[v as usize];
-    let ends: Vec<Point> = edges
+/// The level-0 one-ring of a manifold vertex, in OpenSubdiv's counter-clockwise order.
+fn level0_ring(level: &Level, local: &Local, v: u32) -> Ring {
+    let vi = v as usize;
+    let edges = level.vertex_edges(vi);
+    let faces = level
+        .vertex_faces(vi)
         .iter()
-        .map(|&e| local.unit(inc.other_end(e, v)))
-        .collect();
-    let faces = inc.vert_faces[v as usize]
-        .iter()
-        .map(|&f| {
-            let fv = mesh.face(f as usize);
-            let c = fv.iter().position(|&x| x == v).unwrap();
+        .zip(level.vertex_face_local_indices(vi))
+        .map(|(&f, &c)| {
+            let fv = level.face_vertices(f as usize);
             (1..fv.len())
-                .map(|k| local.unit(fv[(c + k) % fv.len()]))
+                .map(|k| local.unit(fv[(c as usize + k) % fv.len()]))
                 .collect()
         })
         .collect();
     Ring {
         center: local.unit(v),
-        ends,
-        sharpness: inc.incident_sharpness(v),
+        ends: edges
+            .iter()
+            .map(|&e| local.unit(other_end(level, e, v)))
+            .collect(),
+        sharpness: incident_sharpness(level, v),
         far_sharpness: edges
             .iter()
-            .map(|&e| inc.incident_sharpness(inc.other_end(e, v)))
+            .map(|&e| incident_sharpness(level, other_end(level, e, v)))
             .collect(),
         faces,
-        vertex_sharpness: inc.vert_sharpness[v as usize],
+        vertex_sharpness: level.vertex_sharpness(vi),
         level: 0,
     }
 }
@@ -494,10 +521,10 @@ mod tests {
         });
         let mesh = Mesh::from_parts(parts).unwrap();
         let t = limit_stencils(&mesh, &SubdivOptions::default()).unwrap();
-        let inc = Incidence::new(&mesh, &SubdivOptions::default());
+        let level = Level::from_mesh_with_options(&mesh, &SubdivOptions::default());
         for v in 0..8u32 {
-            let local = Local::new(&mesh, &inc, v);
-            let ring = level0_ring(&mesh, &inc, &local, v);
+            let local = Local::new(&level, v);
+            let ring = level0_ring(&level, &local, v);
             let deep = deep_center(ring, 90, &SubdivOptions::default());
             let row: Vec<(u32, f64)> = local.sparse(&deep).collect();
             let (idx, w) = t.row(v as usize);
@@ -536,5 +563,78 @@ mod tests {
         assert!(s[4].normal().z > 0.999_999, "{:?}", s[4].normal());
         // the isolated vertex stays put
         assert_eq!(s[5].position, DVec3::splat(9.0));
+    }
+
+    /// A bumpy 4×4 grid with semi-sharp creases of several sharpness values, a dart (the
+    /// infinitely sharp edge 12-17), a semi-sharp corner and two triangles.
+    fn tagged_mixed_mesh() -> MeshParts {
+        let mut p = grid(4, 4, bumpy);
+        // face 0 (0 1 6 5) becomes two triangles
+        p.face_sizes.remove(0);
+        p.face_indices.drain(0..4);
+        p.face_sizes.extend([3, 3]);
+        p.face_indices.extend([0, 1, 6, 0, 6, 5]);
+        p.creases.extend([
+            Crease {
+                vertices: [6, 7],
+                sharpness: 1.5,
+            },
+            Crease {
+                vertices: [7, 8],
+                sharpness: 2.75,
+            },
+            Crease {
+                vertices: [12, 17],
+                sharpness: 10.0,
+            },
+            Crease {
+                vertices: [11, 16],
+                sharpness: 0.4,
+            },
+            Crease {
+                vertices: [16, 17],
+                sharpness: 1.2,
+            },
+        ]);
+        p.corners.push(Corner {
+            vertex: 18,
+            sharpness: 2.3,
+        });
+        p
+    }
+
+    #[test]
+    fn limits_are_invariant_under_independent_uniform_refinement() {
+        let mesh = Mesh::from_parts(tagged_mixed_mesh()).unwrap();
+        for crease_method in [CreaseMethod::Uniform, CreaseMethod::Chaikin] {
+            for boundary in [
+                BoundaryInterpolation::EdgeOnly,
+                BoundaryInterpolation::EdgeAndCorner,
+            ] {
+                let opts = SubdivOptions {
+                    crease_method,
+                    boundary,
+                    ..SubdivOptions::default()
+                };
+                let base = limit_stencils(&mesh, &opts)
+                    .unwrap()
+                    .apply(mesh.positions())
+                    .unwrap();
+                for k in 1..=4 {
+                    // Far order: the child of control vertex v is vertex v of the child level.
+                    let fine = crate::refine::refine_uniform(&mesh, &opts, k).unwrap();
+                    let lim = limit_stencils(&fine, &opts)
+                        .unwrap()
+                        .apply(fine.positions())
+                        .unwrap();
+                    for (v, (a, b)) in base.iter().zip(&lim).enumerate() {
+                        assert!(
+                            close(*a, *b, 1e-14),
+                            "{opts:?} level {k} vertex {v}: {a} vs {b}"
+                        );
+                    }
+                }
+            }
+        }
     }
 }

@@ -9,11 +9,16 @@
 
 use std::f64::consts::PI;
 
+use crate::catmark::crease::{
+    self, is_semi_sharp, is_sharp, vertex_rule, vertex_rule_from_edges, Rule,
+};
+use crate::catmark::masks::{
+    EdgeMask, EdgeNeighbourhood, VertexMask, VertexMaskBuilder, VertexNeighbourhood,
+};
 use crate::error::{Error, Result};
-use crate::options::{CreaseMethod, SubdivOptions, TriangleSubdivision};
+use crate::options::{CreaseMethod, SubdivOptions};
 
 use super::dense::stationary_left_eigenvector;
-use super::rules::{self, Rule};
 
 /// A point of the neighbourhood: weights on the local basis.
 pub(crate) type Point = Vec<f64>;
@@ -79,8 +84,8 @@ impl Ring {
     /// Sharpness is 0 or infinite everywhere around the vertex and every face is a quad:
     /// from here on the ring's subdivision matrix no longer changes.
     pub fn is_stationary(&self) -> bool {
-        !rules::is_semi_sharp(self.vertex_sharpness)
-            && !self.sharpness.iter().any(|&s| rules::is_semi_sharp(s))
+        !is_semi_sharp(self.vertex_sharpness)
+            && !self.sharpness.iter().any(|&s| is_semi_sharp(s))
             && self.faces.iter().all(|f| f.len() == 3)
     }
 
@@ -100,14 +105,65 @@ impl Ring {
                 p
             })
             .collect();
-        let child_sharpness = rules::child_edges_around(method, &self.sharpness);
+        let mut child_sharpness = vec![0.0; n];
+        crease::subdivide_edge_sharpnesses_around_vertex(
+            method,
+            &self.sharpness,
+            &mut child_sharpness,
+        );
         let far_child: Vec<f32> = (0..n)
-            .map(|i| rules::child_edge_sharpness(method, self.sharpness[i], &self.far_sharpness[i]))
+            .map(|i| {
+                crease::subdivide_edge_sharpness_at_vertex(
+                    method,
+                    self.sharpness[i],
+                    &self.far_sharpness[i],
+                )
+            })
             .collect();
+        let mut mask = EdgeMask::default();
         let ends: Vec<Point> = (0..n)
-            .map(|i| self.edge_point(i, &face_points, child_sharpness[i], far_child[i], options))
+            .map(|i| {
+                // Far's rule for the new edge vertex: from its two half edges.
+                let halves = [child_sharpness[i], far_child[i]];
+                let child_rule = vertex_rule(0.0, halves.iter().filter(|&&s| is_sharp(s)).count());
+                let faces: Vec<usize> = self.edge_faces(i).collect();
+                let tri = |k: usize| faces.get(k).is_some_and(|&f| self.faces[f].len() == 2);
+                let edge = EdgeNeighbourhood {
+                    sharpness: self.sharpness[i],
+                    num_faces: faces.len(),
+                    faces_are_triangles: [tri(0), tri(1)],
+                };
+                mask.compute(&edge, Some(child_rule), method, options.triangles);
+                let mut p = scaled(mask.vertices[0], &self.center);
+                axpy(&mut p, mask.vertices[1], &self.ends[i]);
+                for (&w, &f) in mask.faces.iter().zip(&faces) {
+                    axpy(&mut p, w, &face_points[f]);
+                }
+                p
+            })
             .collect();
-        let center = self.vertex_point(&face_points, &child_sharpness, method);
+        let child_vertex = crease::subdivide_vertex_sharpness(self.vertex_sharpness);
+        let neighbourhood = VertexNeighbourhood {
+            num_faces: self.faces.len(),
+            sharpness: self.vertex_sharpness,
+            child_sharpness: child_vertex,
+            edge_sharpness: &self.sharpness,
+        };
+        let mut vmask = VertexMask::default();
+        VertexMaskBuilder::default().compute(
+            &neighbourhood,
+            vertex_rule_from_edges(self.vertex_sharpness, &self.sharpness),
+            vertex_rule_from_edges(child_vertex, &child_sharpness),
+            method,
+            &mut vmask,
+        );
+        let mut center = scaled(vmask.vertex, &self.center);
+        for (&w, e) in vmask.edges.iter().zip(&self.ends) {
+            axpy(&mut center, w, e);
+        }
+        for (&w, f) in vmask.faces.iter().zip(&face_points) {
+            axpy(&mut center, w, f);
+        }
         let faces = (0..self.faces.len())
             .map(|i| {
                 vec![
@@ -125,103 +181,8 @@ impl Ring {
                 .collect(),
             sharpness: child_sharpness,
             faces,
-            vertex_sharpness: rules::decrement(self.vertex_sharpness),
+            vertex_sharpness: child_vertex,
             level: self.level + 1,
-        }
-    }
-
-    /// Edge-vertex mask (`Scheme::ComputeEdgeVertexMask` with Far's parent and child rules).
-    fn edge_point(
-        &self,
-        i: usize,
-        face_points: &[Point],
-        child_here: f32,
-        child_far: f32,
-        options: &SubdivOptions,
-    ) -> Point {
-        let s = self.sharpness[i];
-        let mut midpoint = scaled(0.5, &self.center);
-        axpy(&mut midpoint, 0.5, &self.ends[i]);
-        if rules::is_sharp(s) && rules::is_sharp(child_here) && rules::is_sharp(child_far) {
-            return midpoint;
-        }
-        let faces: Vec<usize> = self.edge_faces(i).collect();
-        let (mut vw, mut fw) = (0.25, 0.25);
-        if faces.len() != 2 {
-            fw = 0.5 / faces.len() as f64;
-        } else if options.triangles == TriangleSubdivision::Smooth {
-            let tri: Vec<bool> = faces.iter().map(|&f| self.faces[f].len() == 2).collect();
-            if tri[0] || tri[1] {
-                let f0: f64 = if tri[0] { 0.470 } else { 0.25 };
-                let f1: f64 = if tri[1] { 0.470 } else { 0.25 };
-                fw = 0.5 * (f0 + f1);
-                vw = 0.5 * (1.0 - 2.0 * fw);
-            }
-        }
-        if rules::is_sharp(s) {
-            // Crease-to-smooth transition: blend by the parent's sharpness.
-            let pw = s as f64;
-            let cw = 1.0 - pw;
-            vw = pw * 0.5 + cw * vw;
-            fw *= cw;
-        }
-        let mut p = scaled(vw, &self.center);
-        axpy(&mut p, vw, &self.ends[i]);
-        for f in faces {
-            axpy(&mut p, fw, &face_points[f]);
-        }
-        p
-    }
-
-    /// Vertex-vertex mask (`Scheme::ComputeVertexVertexMask`), blending the parent and
-    /// child rules by OpenSubdiv's fractional weight.
-    fn vertex_point(&self, face_points: &[Point], child: &[f32], method: CreaseMethod) -> Point {
-        let parent_rule = rules::vertex_rule(self.vertex_sharpness, &self.sharpness);
-        if matches!(parent_rule, Rule::Smooth | Rule::Dart) {
-            return self.vertex_mask(Rule::Smooth, &self.sharpness, face_points);
-        }
-        let child_vertex = rules::decrement(self.vertex_sharpness);
-        let child_rule = rules::vertex_rule(child_vertex, child);
-        let parent = self.vertex_mask(parent_rule, &self.sharpness, face_points);
-        if child_rule == parent_rule {
-            return parent;
-        }
-        let pw = rules::fractional_weight(
-            method,
-            self.vertex_sharpness,
-            child_vertex,
-            &self.sharpness,
-            child,
-        ) as f64;
-        let mut p = scaled(pw, &parent);
-        axpy(
-            &mut p,
-            1.0 - pw,
-            &self.vertex_mask(child_rule, child, face_points),
-        );
-        p
-    }
-
-    fn vertex_mask(&self, rule: Rule, sharpness: &[f32], face_points: &[Point]) -> Point {
-        match rule {
-            Rule::Smooth | Rule::Dart => {
-                let n = self.valence() as f64;
-                let mut p = scaled((n - 2.0) / n, &self.center);
-                let w = 1.0 / (n * n);
-                for (e, f) in self.ends.iter().zip(face_points) {
-                    axpy(&mut p, w, e);
-                    axpy(&mut p, w, f);
-                }
-                p
-            }
-            Rule::Crease => {
-                let (a, b) = crease_pair(sharpness);
-                let mut p = scaled(0.75, &self.center);
-                axpy(&mut p, 0.125, &self.ends[a]);
-                axpy(&mut p, 0.125, &self.ends[b]);
-                p
-            }
-            Rule::Corner => self.center.clone(),
         }
     }
 
@@ -229,7 +190,7 @@ impl Ring {
     pub fn limit(&self) -> Result<Point> {
         let n = self.valence();
         Ok(
-            match rules::vertex_rule(self.vertex_sharpness, &self.sharpness) {
+            match vertex_rule_from_edges(self.vertex_sharpness, &self.sharpness) {
                 Rule::Corner => self.center.clone(),
                 Rule::Crease => {
                     let (a, b) = crease_pair(&self.sharpness);
@@ -304,7 +265,7 @@ impl Ring {
     pub fn tangents(&self, j: usize) -> (Point, Point) {
         let n = self.valence();
         let (lead, trail) = (j, (j + 1) % n);
-        match rules::vertex_rule(self.vertex_sharpness, &self.sharpness) {
+        match vertex_rule_from_edges(self.vertex_sharpness, &self.sharpness) {
             Rule::Smooth | Rule::Dart if n >= 3 => {
                 (self.smooth_tangent(lead), self.smooth_tangent(trail))
             }
@@ -352,7 +313,7 @@ impl Ring {
     /// sector's characteristic map spreads the edges (angle `π p / k`).
     fn crease_tangents(&self, j: usize) -> (Point, Point) {
         let n = self.valence();
-        let sharp = |i: usize| rules::is_sharp(self.sharpness[i % n]);
+        let sharp = |i: usize| is_sharp(self.sharpness[i % n]);
         let mut a = j;
         while !sharp(a) {
             a = (a + n - 1) % n;
@@ -419,16 +380,10 @@ impl Ring {
     }
 }
 
-/// First and last sharp edge (`Crease::GetSharpEdgePairOfCrease`).
+/// First and last sharp edge (`Crease::GetSharpEdgePairOfCrease`); only called for the
+/// crease rule, which has two.
 fn crease_pair(sharpness: &[f32]) -> (usize, usize) {
-    let a = sharpness
-        .iter()
-        .position(|&s| rules::is_sharp(s))
-        .unwrap_or(0);
-    let b = sharpness
-        .iter()
-        .rposition(|&s| rules::is_sharp(s))
-        .unwrap_or(0);
+    let [a, b] = crease::sharp_edge_pair_of_crease(sharpness).unwrap_or([0, 0]);
     (a, b)
 }
 
@@ -450,9 +405,9 @@ impl CreaseLine {
     /// Refine until the sharpness has decayed, then apply the crease limit mask.
     pub fn limit(mut self, method: CreaseMethod) -> Result<Point> {
         for _ in 0..MAX_LEVELS {
-            let rule = rules::vertex_rule(self.vertex_sharpness, &self.sharpness);
-            let stationary = !rules::is_semi_sharp(self.vertex_sharpness)
-                && !self.sharpness.iter().any(|&s| rules::is_semi_sharp(s));
+            let rule = vertex_rule_from_edges(self.vertex_sharpness, &self.sharpness);
+            let stationary = !is_semi_sharp(self.vertex_sharpness)
+                && !self.sharpness.iter().any(|&s| is_semi_sharp(s));
             if stationary {
                 if rule == Rule::Crease {
                     let mut p = scaled(4.0 / 6.0, &self.center);
@@ -462,9 +417,10 @@ impl CreaseLine {
                 }
                 return Ok(self.center);
             }
-            let child = rules::child_edges_around(method, &self.sharpness);
-            let child_vertex = rules::decrement(self.vertex_sharpness);
-            let child_rule = rules::vertex_rule(child_vertex, &child);
+            let mut child = vec![0.0; self.sharpness.len()];
+            crease::subdivide_edge_sharpnesses_around_vertex(method, &self.sharpness, &mut child);
+            let child_vertex = crease::subdivide_vertex_sharpness(self.vertex_sharpness);
+            let child_rule = vertex_rule_from_edges(child_vertex, &child);
             let mask = |r: Rule| -> Point {
                 if r == Rule::Crease {
                     let mut p = scaled(0.75, &self.center);
@@ -477,7 +433,7 @@ impl CreaseLine {
             };
             let mut center = mask(rule);
             if child_rule != rule {
-                let pw = rules::fractional_weight(
+                let pw = crease::fractional_weight_at_vertex(
                     method,
                     self.vertex_sharpness,
                     child_vertex,

@@ -202,6 +202,35 @@ fn check_exits_2_on_a_mesh_that_loads_but_is_not_a_manifold() {
         input.display()
     );
     assert_eq!(stdout(&o), expected);
+
+    let o = profsubd(&["check", "--json", input.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(2));
+    let json: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    let expected = serde_json::json!({
+        "mesh": input.display().to_string(),
+        "num_vertices": 8, "num_edges": 10, "num_faces": 4,
+        "face_sizes": {"3": 3, "4": 1},
+        "valences": {"0": 1, "2": 4, "3": 1, "4": 1, "5": 1},
+        "boundary_edges": [[1, 2], [0, 3], [3, 1], [1, 4], [4, 0], [0, 7], [7, 6], [6, 2]],
+        "num_boundary_loops": 1,
+        "non_manifold_edges": [[0, 1]],
+        "inconsistent_edges": [[2, 0]],
+        "non_manifold_vertices": [0, 1, 2, 5],
+        "isolated_vertices": [5],
+        "faces_with_repeated_vertices": [],
+        "num_components": 1,
+        "euler_characteristic": 2,
+        "is_manifold": false, "is_closed": false, "is_consistently_oriented": false,
+        "creases": [{"vertices": [0, 1], "sharpness": 1.5}, {"vertices": [0, 2], "sharpness": 10.0}],
+        "corners": [],
+        "holes": [3],
+        "options": {
+            "boundary_interpolation": {"value": "edge-and-corner", "source": "default"},
+            "crease_method": {"value": "uniform", "source": "default"},
+            "triangles": {"value": "catmark", "source": "default"},
+        },
+    });
+    assert_eq!(json, expected);
 }
 
 #[test]

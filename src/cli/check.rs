@@ -21,6 +21,9 @@ pub struct CheckArgs {
     /// The OBJ file to check.
     #[arg(value_name = "MESH.obj")]
     pub mesh: PathBuf,
+    /// Print the report as one JSON object (full lists, snake_case keys) instead of text.
+    #[arg(long)]
+    pub json: bool,
     /// Options to report as in effect (they override the file's tags).
     #[command(flatten)]
     pub options: SubdivFlags,
@@ -32,10 +35,17 @@ pub fn run(args: &CheckArgs) -> Result<i32> {
     let read = read_obj_file(&args.mesh)?;
     print_warnings(&read.warnings);
     let report = read.mesh.check();
-    print!(
-        "{}",
-        format_report(&args.mesh, &read.mesh, &report, &args.options)
-    );
+    if args.json {
+        println!(
+            "{}",
+            json_report(&args.mesh, &read.mesh, &report, &args.options)
+        );
+    } else {
+        print!(
+            "{}",
+            format_report(&args.mesh, &read.mesh, &report, &args.options)
+        );
+    }
     Ok(if report.is_manifold() { 0 } else { 2 })
 }
 
@@ -98,6 +108,35 @@ pub fn format_report(
         sharpness_summary(mesh.corners().iter().map(|c| c.sharpness)),
     );
     line("holes", indices(mesh.holes()));
+    let settings = settings(mesh, flags);
+    for (name, value, from) in settings {
+        line(name, format!("{value} ({from})"));
+    }
+    let verdict = if r.is_manifold() {
+        "manifold mesh".to_string()
+    } else {
+        let problems: Vec<String> = [
+            (r.non_manifold_edges.len(), "non-manifold edges"),
+            (r.inconsistent_edges.len(), "inconsistently oriented edges"),
+            (r.non_manifold_vertices.len(), "non-manifold vertices"),
+            (r.isolated_vertices.len(), "isolated vertices"),
+            (
+                r.faces_with_repeated_vertices.len(),
+                "faces with repeated vertices",
+            ),
+        ]
+        .iter()
+        .filter(|(n, _)| *n > 0)
+        .map(|(n, what)| format!("{n} {what}"))
+        .collect();
+        format!("not a manifold ({})", problems.join(", "))
+    };
+    line("result", verdict);
+    out
+}
+
+/// The subdivision options in effect: (name, value, where it comes from) for each.
+fn settings(mesh: &Mesh, flags: &SubdivFlags) -> [(&'static str, &'static str, &'static str); 3] {
     let file = mesh.options();
     let given = flags.partial();
     let resolved = given.over(file).resolve();
@@ -106,7 +145,7 @@ pub fn format_report(
         (false, true) => "file tag",
         _ => "default",
     };
-    let settings = [
+    [
         (
             "boundary interpolation",
             match resolved.boundary {
@@ -132,31 +171,42 @@ pub fn format_report(
             },
             source(given.triangles.is_some(), file.triangles.is_some()),
         ),
-    ];
-    for (name, value, from) in settings {
-        line(name, format!("{value} ({from})"));
-    }
-    let verdict = if r.is_manifold() {
-        "manifold mesh".to_string()
-    } else {
-        let problems: Vec<String> = [
-            (r.non_manifold_edges.len(), "non-manifold edges"),
-            (r.inconsistent_edges.len(), "inconsistently oriented edges"),
-            (r.non_manifold_vertices.len(), "non-manifold vertices"),
-            (r.isolated_vertices.len(), "isolated vertices"),
-            (
-                r.faces_with_repeated_vertices.len(),
-                "faces with repeated vertices",
-            ),
-        ]
+    ]
+}
+
+/// The `--json` output: the whole report, the verdicts, the tags and the options.
+pub fn json_report(
+    path: &std::path::Path,
+    mesh: &Mesh,
+    r: &MeshReport,
+    flags: &SubdivFlags,
+) -> serde_json::Value {
+    let mut value = serde_json::to_value(r).unwrap_or_default();
+    let options: serde_json::Map<String, serde_json::Value> = settings(mesh, flags)
         .iter()
-        .filter(|(n, _)| *n > 0)
-        .map(|(n, what)| format!("{n} {what}"))
+        .map(|(name, value, from)| {
+            (
+                name.replace(' ', "_"),
+                serde_json::json!({ "value": value, "source": from }),
+            )
+        })
         .collect();
-        format!("not a manifold ({})", problems.join(", "))
-    };
-    line("result", verdict);
-    out
+    let extra = serde_json::json!({
+        "mesh": path.display().to_string(),
+        "is_manifold": r.is_manifold(),
+        "is_closed": r.is_closed(),
+        "is_consistently_oriented": r.is_consistently_oriented(),
+        "creases": mesh.creases().iter().map(|c| serde_json::json!({
+            "vertices": c.vertices, "sharpness": c.sharpness })).collect::<Vec<_>>(),
+        "corners": mesh.corners().iter().map(|c| serde_json::json!({
+            "vertex": c.vertex, "sharpness": c.sharpness })).collect::<Vec<_>>(),
+        "holes": mesh.holes(),
+        "options": options,
+    });
+    if let (Some(obj), serde_json::Value::Object(more)) = (value.as_object_mut(), extra) {
+        obj.extend(more);
+    }
+    value
 }
 
 /// `k:n k:n ...` for a histogram.

@@ -35,7 +35,7 @@ use crate::topology::Level;
 /// The findings of [`check`]. Edges are given by their two vertices (in the order of
 /// OpenSubdiv's first edge on that pair), vertices and faces by index; all lists are in
 /// increasing order of OpenSubdiv's edge, vertex or face numbers.
-#[derive(Debug, Clone, PartialEq, Eq, Default)]
+#[derive(Debug, Clone, PartialEq, Eq, Default, serde::Serialize)]
 pub struct MeshReport {
     /// Number of vertices, isolated ones included.
     pub num_vertices: usize,

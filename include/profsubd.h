@@ -218,6 +218,76 @@ typedef struct profsubd_mesh_desc {
     size_t num_holes;
 } profsubd_mesh_desc;
 
+/**
+ * What a CAD user must know about a mesh before relying on it (see `profsubd_mesh_check`).
+ * Edges are counted by vertex pair: a *boundary* edge is used by one face, a
+ * *non-manifold* edge by more than two, an *inconsistent* edge twice in the same direction.
+ */
+typedef struct profsubd_mesh_report {
+    /**
+     * Set by the caller to `sizeof(profsubd_mesh_report)` before the call; the library sets
+     * it to the number of bytes it filled.
+     */
+    size_t struct_size;
+    /**
+     * Number of vertices, isolated ones included.
+     */
+    size_t num_vertices;
+    /**
+     * Number of edges, as OpenSubdiv counts them (`profsubd_mesh_num_edges`).
+     */
+    size_t num_edges;
+    /**
+     * Number of faces.
+     */
+    size_t num_faces;
+    /**
+     * Vertex pairs used by exactly one face.
+     */
+    size_t num_boundary_edges;
+    /**
+     * Connected pieces of the boundary edges.
+     */
+    size_t num_boundary_loops;
+    /**
+     * Vertex pairs used by more than two faces.
+     */
+    size_t num_non_manifold_edges;
+    /**
+     * Vertices OpenSubdiv tags non-manifold (bow-ties, non-manifold edges, no face).
+     */
+    size_t num_non_manifold_vertices;
+    /**
+     * Vertices in no face.
+     */
+    size_t num_isolated_vertices;
+    /**
+     * Faces in which some vertex appears more than once.
+     */
+    size_t num_faces_with_repeated_vertices;
+    /**
+     * Connected pieces of faces (joined through shared vertices).
+     */
+    size_t num_components;
+    /**
+     * V - E + F.
+     */
+    int64_t euler_characteristic;
+    /**
+     * 1 if no non-manifold edge or vertex, no isolated vertex and no face repeating a
+     * vertex; else 0.
+     */
+    int32_t is_manifold;
+    /**
+     * 1 if no edge is used twice in the same direction; else 0.
+     */
+    int32_t is_consistently_oriented;
+    /**
+     * Vertex pairs used twice in the same direction (a flipped face).
+     */
+    size_t num_inconsistent_edges;
+} profsubd_mesh_report;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -334,6 +404,69 @@ enum profsubd_status profsubd_mesh_get_corners(const struct profsubd_mesh *mesh,
                                                float *sharpness,
                                                size_t capacity,
                                                size_t *needed);
+
+/**
+ * Read an OBJ file with OpenSubdiv's tag lines (`t crease`, `t corner`, `t hole`,
+ * `t interpolateboundary`, `t creasemethod`, `t smoothtriangles`); `*out` receives the mesh.
+ * Tags the reader ignores are kept as warnings (`profsubd_mesh_get_warning`). Errors:
+ * `PROFSUBD_ERROR_IO` (cannot read), `PROFSUBD_ERROR_PARSE` (malformed; the message gives
+ * file, line and what was expected), `PROFSUBD_ERROR_INVALID_MESH`.
+ */
+enum profsubd_status profsubd_mesh_read_obj(const char *path, struct profsubd_mesh **out);
+
+/**
+ * Write the mesh as OBJ with its tags; reading the file back gives the same mesh, bit for
+ * bit. An existing file is replaced. Errors: `PROFSUBD_ERROR_IO`.
+ */
+enum profsubd_status profsubd_mesh_write_obj(const struct profsubd_mesh *mesh, const char *path);
+
+/**
+ * Number of warnings the OBJ reader gave for this mesh (0 for a mesh not read from a file).
+ */
+enum profsubd_status profsubd_mesh_num_warnings(const struct profsubd_mesh *mesh, size_t *out);
+
+/**
+ * Warning number `index` (0-based), as "file:line: what was ignored". `*out` receives a
+ * string owned by the mesh, valid until the mesh is freed. An index not below
+ * `profsubd_mesh_num_warnings` gives `PROFSUBD_ERROR_INVALID_ARGUMENT`.
+ */
+enum profsubd_status profsubd_mesh_get_warning(const struct profsubd_mesh *mesh,
+                                               size_t index,
+                                               const char **out);
+
+/**
+ * Number of edges, as OpenSubdiv's level 0 counts them (a vertex pair used twice by one
+ * face, or a degenerate pair, counts once per use).
+ */
+enum profsubd_status profsubd_mesh_num_edges(const struct profsubd_mesh *mesh, size_t *out);
+
+/**
+ * Copy the edges: 2 vertex indices per edge, in OpenSubdiv's level-0 edge order (faces in
+ * order, each face's edges in order, an edge numbered when first met). `capacity` and
+ * `*needed` count edges (`vertices` holds `2 * capacity` indices).
+ */
+enum profsubd_status profsubd_mesh_get_edges(const struct profsubd_mesh *mesh,
+                                             uint32_t *vertices,
+                                             size_t capacity,
+                                             size_t *needed);
+
+/**
+ * Copy the valence of each vertex: the number of edges incident to it (0 for a vertex in
+ * no face). `capacity` and `*needed` count vertices.
+ */
+enum profsubd_status profsubd_mesh_get_valences(const struct profsubd_mesh *mesh,
+                                                uint32_t *out,
+                                                size_t capacity,
+                                                size_t *needed);
+
+/**
+ * Examine the mesh and fill `*out`. The caller sets `out->struct_size =
+ * sizeof(profsubd_mesh_report)` first (a smaller value gives
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT`); a larger struct from a newer header is filled up to
+ * the fields this library knows, and `out->struct_size` is set to the bytes filled.
+ */
+enum profsubd_status profsubd_mesh_check(const struct profsubd_mesh *mesh,
+                                         struct profsubd_mesh_report *out);
 
 /**
  * Create an options object with nothing set; `*out` receives it.

@@ -156,9 +156,12 @@ fn header_and_library_agree() {
     );
 
     let desc_size = std::mem::size_of::<profsubd::ffi::profsubd_mesh_desc>();
+    let report_size = std::mem::size_of::<profsubd::ffi::profsubd_mesh_report>();
     let run = Command::new(&program)
         .arg(desc_size.to_string())
+        .arg(report_size.to_string())
         .arg(&work)
+        .arg(root().join("examples/meshes/cube_creased.obj"))
         .output()
         .unwrap();
     let stdout = String::from_utf8_lossy(&run.stdout);

@@ -28,6 +28,13 @@ int main(void) {
     if (status != PROFSUBD_OK) {
         fprintf(stderr, "%s: %s\n", profsubd_status_string(status), profsubd_last_error_message());
     }
+    {
+        profsubd_mesh_report report = {0};
+        report.struct_size = sizeof report;
+        if (profsubd_mesh_check(mesh, &report) == PROFSUBD_OK && !report.is_manifold) {
+            return 2;
+        }
+    }
     status = profsubd_mesh_get_positions(mesh, NULL, 0, &needed);
     (void)profsubd_options_new(&options);
     (void)profsubd_options_set_boundary(options, PROFSUBD_BOUNDARY_EDGE_ONLY);

@@ -1,6 +1,8 @@
 //! The mesh handle: creation from caller arrays, counts and copy-out queries.
 
+use std::ffi::CString;
 use std::mem::size_of;
+use std::sync::OnceLock;
 
 use glam::DVec3;
 
@@ -10,6 +12,7 @@ use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::{arg_out, arg_slice, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts, MAX_COMPONENTS};
+use crate::topology::Level;
 
 /// A validated control mesh (opaque, immutable, safe to share between threads). Create with
 /// `profsubd_mesh_new` or `profsubd_mesh_read_obj`; release with `profsubd_mesh_free`.
@@ -21,17 +24,45 @@ pub struct profsubd_mesh {
 #[derive(Debug)]
 pub struct MeshData {
     mesh: Mesh,
+    /// What the OBJ reader ignored, for `profsubd_mesh_get_warning`.
+    warnings: Vec<CString>,
+    /// The base level (edges, valences), built on first use; `OnceLock` keeps the handle
+    /// shareable between threads.
+    level: OnceLock<Level>,
 }
 
 impl MeshData {
     /// Wrap a mesh.
     pub fn new(mesh: Mesh) -> Self {
-        MeshData { mesh }
+        Self::with_warnings(mesh, Vec::new())
+    }
+
+    /// Wrap a mesh read with `warnings` (interior NUL bytes become spaces).
+    pub fn with_warnings(mesh: Mesh, warnings: Vec<String>) -> Self {
+        let warnings = warnings
+            .into_iter()
+            .map(|w| CString::new(w.replace('\0', " ")).unwrap_or_default())
+            .collect();
+        MeshData {
+            mesh,
+            warnings,
+            level: OnceLock::new(),
+        }
     }
 
     /// The mesh.
     pub fn mesh(&self) -> &Mesh {
         &self.mesh
+    }
+
+    /// The reader's warnings.
+    pub fn warnings(&self) -> &[CString] {
+        &self.warnings
+    }
+
+    /// The mesh's base level in OpenSubdiv's component order.
+    pub fn level(&self) -> &Level {
+        self.level.get_or_init(|| Level::from_mesh(&self.mesh))
     }
 }
 
@@ -188,15 +219,15 @@ pub unsafe extern "C" fn profsubd_mesh_free(mesh: *mut profsubd_mesh) {
 }
 
 /// A count query: check both pointers, then write `count(mesh)`.
-unsafe fn count_query(
+pub(crate) unsafe fn count_query(
     mesh: *const profsubd_mesh,
     out: *mut usize,
-    count: impl FnOnce(&MeshData) -> FfiResult<usize>,
+    count: impl FnOnce(&MeshData) -> usize,
 ) -> profsubd_status {
     status_call(|| {
         let m = handle::borrow(mesh, "mesh")?;
         let out = arg_out(out, "out")?;
-        out.write(count(m)?);
+        out.write(count(m));
         Ok(())
     })
 }
@@ -207,7 +238,7 @@ pub unsafe extern "C" fn profsubd_mesh_num_vertices(
     mesh: *const profsubd_mesh,
     out: *mut usize,
 ) -> profsubd_status {
-    count_query(mesh, out, |m| Ok(m.mesh.num_vertices()))
+    count_query(mesh, out, |m| m.mesh.num_vertices())
 }
 
 /// Number of faces.
@@ -216,7 +247,7 @@ pub unsafe extern "C" fn profsubd_mesh_num_faces(
     mesh: *const profsubd_mesh,
     out: *mut usize,
 ) -> profsubd_status {
-    count_query(mesh, out, |m| Ok(m.mesh.num_faces()))
+    count_query(mesh, out, |m| m.mesh.num_faces())
 }
 
 /// Number of face vertex indices (the sum of the face sizes).
@@ -225,7 +256,7 @@ pub unsafe extern "C" fn profsubd_mesh_num_face_indices(
     mesh: *const profsubd_mesh,
     out: *mut usize,
 ) -> profsubd_status {
-    count_query(mesh, out, |m| Ok(m.mesh.face_indices().len()))
+    count_query(mesh, out, |m| m.mesh.face_indices().len())
 }
 
 /// Number of sharp edges (crease tags).
@@ -234,7 +265,7 @@ pub unsafe extern "C" fn profsubd_mesh_num_creases(
     mesh: *const profsubd_mesh,
     out: *mut usize,
 ) -> profsubd_status {
-    count_query(mesh, out, |m| Ok(m.mesh.creases().len()))
+    count_query(mesh, out, |m| m.mesh.creases().len())
 }
 
 /// Number of sharp vertices (corner tags).
@@ -243,7 +274,7 @@ pub unsafe extern "C" fn profsubd_mesh_num_corners(
     mesh: *const profsubd_mesh,
     out: *mut usize,
 ) -> profsubd_status {
-    count_query(mesh, out, |m| Ok(m.mesh.corners().len()))
+    count_query(mesh, out, |m| m.mesh.corners().len())
 }
 
 /// Number of hole faces.
@@ -252,7 +283,7 @@ pub unsafe extern "C" fn profsubd_mesh_num_holes(
     mesh: *const profsubd_mesh,
     out: *mut usize,
 ) -> profsubd_status {
-    count_query(mesh, out, |m| Ok(m.mesh.holes().len()))
+    count_query(mesh, out, |m| m.mesh.holes().len())
 }
 
 /// Copy the vertex positions: 3 doubles (x y z) per vertex. `capacity` and `*needed` count

@@ -53,6 +53,8 @@
 pub mod error;
 pub mod handle;
 pub mod mesh;
+pub mod mesh_io;
+pub mod mesh_topology;
 pub mod options;
 pub mod panic;
 pub mod ptr;
@@ -60,5 +62,6 @@ pub mod status;
 pub mod version;
 
 pub use mesh::{profsubd_mesh, profsubd_mesh_desc};
+pub use mesh_topology::profsubd_mesh_report;
 pub use options::profsubd_options;
 pub use status::profsubd_status;

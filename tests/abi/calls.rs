@@ -1,7 +1,8 @@
 //! A C caller written in Rust: it sees the library only through bindgen's translation of
 //! `include/profsubd.h` (included below) and is linked against the built `libprofsubd.so`.
-//! Compiled and run by `tests/abi_bindgen.rs`; arguments: the Rust-side
-//! `size_of::<profsubd_mesh_desc>()`, then a scratch directory.
+//! Compiled and run by `tests/abi_bindgen.rs`; arguments: the Rust-side sizes of
+//! `profsubd_mesh_desc` and `profsubd_mesh_report`, a scratch directory, and the bundled
+//! example `examples/meshes/cube_creased.obj`.
 
 #![allow(
     non_camel_case_types,
@@ -13,7 +14,7 @@
 include!(env!("PROFSUBD_BINDINGS"));
 include!(env!("PROFSUBD_SYMBOLS"));
 
-use std::ffi::CStr;
+use std::ffi::{CStr, CString};
 use std::ptr::{null, null_mut};
 
 fn last_error() -> String {
@@ -98,6 +99,9 @@ impl Square {
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let rust_desc_size: usize = args[1].parse().unwrap();
+    let rust_report_size: usize = args[2].parse().unwrap();
+    let work = std::path::PathBuf::from(&args[3]);
+    let cube = CString::new(args[4].as_str()).unwrap();
     let mut checks = 0;
 
     // Every function the header declares resolved to an address in the library.
@@ -108,6 +112,10 @@ fn main() {
 
     // Layouts: bindgen (clang reading the header) and rustc agree.
     assert_eq!(std::mem::size_of::<profsubd_mesh_desc>(), rust_desc_size);
+    assert_eq!(
+        std::mem::size_of::<profsubd_mesh_report>(),
+        rust_report_size
+    );
     checks += 1;
 
     unsafe {
@@ -343,9 +351,149 @@ fn main() {
         assert!(last_error().contains("not a live profsubd_options"));
         profsubd_options_free(options);
         profsubd_options_free(null_mut());
+        checks += 5;
+
+        // Topology: OpenSubdiv's edges of the strip, valences, the report.
+        check(
+            profsubd_mesh_num_edges(mesh, &mut n),
+            PROFSUBD_OK,
+            "num_edges",
+        );
+        assert_eq!(n, 7);
+        let mut edges = [0u32; 14];
+        check(
+            profsubd_mesh_get_edges(mesh, edges.as_mut_ptr(), 7, &mut n),
+            PROFSUBD_OK,
+            "get_edges",
+        );
+        assert_eq!(edges, [0, 1, 1, 4, 4, 3, 3, 0, 1, 2, 2, 5, 5, 4]);
+        let mut valences = [0u32; 6];
+        check(
+            profsubd_mesh_get_valences(mesh, valences.as_mut_ptr(), 6, &mut n),
+            PROFSUBD_OK,
+            "get_valences",
+        );
+        assert_eq!(valences, [2, 3, 2, 2, 3, 2]);
+        let mut report: profsubd_mesh_report = std::mem::zeroed();
+        report.struct_size = std::mem::size_of::<profsubd_mesh_report>();
+        check(profsubd_mesh_check(mesh, &mut report), PROFSUBD_OK, "check");
+        assert_eq!(
+            (
+                report.num_vertices,
+                report.num_edges,
+                report.num_faces,
+                report.num_boundary_edges
+            ),
+            (6, 7, 2, 6)
+        );
+        assert_eq!((report.num_boundary_loops, report.num_components), (1, 1));
+        assert_eq!(report.euler_characteristic, 1);
+        assert_eq!(
+            (report.is_manifold, report.is_consistently_oriented),
+            (1, 1)
+        );
+        report.struct_size = 8;
+        check(
+            profsubd_mesh_check(mesh, &mut report),
+            PROFSUBD_ERROR_INVALID_ARGUMENT,
+            "size",
+        );
+        checks += 4;
+
+        // OBJ: write, read back, same data; the bundled example; a missing file.
+        let path = CString::new(work.join("strip.obj").to_str().unwrap()).unwrap();
+        check(
+            profsubd_mesh_write_obj(mesh, path.as_ptr()),
+            PROFSUBD_OK,
+            "write_obj",
+        );
+        let mut back = null_mut();
+        check(
+            profsubd_mesh_read_obj(path.as_ptr(), &mut back),
+            PROFSUBD_OK,
+            "read_obj",
+        );
+        let mut again = vec![0.0f64; 18];
+        check(
+            profsubd_mesh_get_positions(back, again.as_mut_ptr(), 18, &mut n),
+            PROFSUBD_OK,
+            "positions read back",
+        );
+        assert_eq!(bits(&again), bits(&sq.positions));
+        check(
+            profsubd_mesh_get_creases(back, cv.as_mut_ptr(), cs.as_mut_ptr(), 1, &mut n),
+            PROFSUBD_OK,
+            "creases read back",
+        );
+        assert_eq!((cv, cs), ([1, 4], [1.5]));
+        check(
+            profsubd_mesh_num_warnings(back, &mut n),
+            PROFSUBD_OK,
+            "num_warnings",
+        );
+        assert_eq!(n, 0);
+        let mut warning = null();
+        check(
+            profsubd_mesh_get_warning(back, 0, &mut warning),
+            PROFSUBD_ERROR_INVALID_ARGUMENT,
+            "no warning 0",
+        );
+        profsubd_mesh_free(back);
+        let mut cube_mesh = null_mut();
+        check(
+            profsubd_mesh_read_obj(cube.as_ptr(), &mut cube_mesh),
+            PROFSUBD_OK,
+            "cube",
+        );
+        check(
+            profsubd_mesh_num_edges(cube_mesh, &mut n),
+            PROFSUBD_OK,
+            "cube edges",
+        );
+        assert_eq!(n, 12);
+        check(
+            profsubd_mesh_num_creases(cube_mesh, &mut n),
+            PROFSUBD_OK,
+            "cube creases",
+        );
+        assert_eq!(n, 5);
+        check(
+            profsubd_mesh_check(cube_mesh, &mut report),
+            PROFSUBD_ERROR_INVALID_ARGUMENT,
+            "8",
+        );
+        report.struct_size = std::mem::size_of::<profsubd_mesh_report>();
+        check(
+            profsubd_mesh_check(cube_mesh, &mut report),
+            PROFSUBD_OK,
+            "cube check",
+        );
+        assert_eq!(
+            (report.euler_characteristic, report.num_boundary_edges),
+            (2, 0)
+        );
+        profsubd_mesh_free(cube_mesh);
+        let missing = CString::new(work.join("missing.obj").to_str().unwrap()).unwrap();
+        check(
+            profsubd_mesh_read_obj(missing.as_ptr(), &mut back),
+            PROFSUBD_ERROR_IO,
+            "missing",
+        );
+        assert!(last_error().contains("missing.obj"));
+        check(
+            profsubd_mesh_read_obj(null(), &mut back),
+            PROFSUBD_ERROR_NULL_ARGUMENT,
+            "NULL path",
+        );
+        check(
+            profsubd_mesh_write_obj(mesh, null()),
+            PROFSUBD_ERROR_NULL_ARGUMENT,
+            "NULL path",
+        );
+        checks += 6;
+
         profsubd_mesh_free(mesh);
         profsubd_mesh_free(null_mut());
-        checks += 5;
     }
     println!("{checks} checks passed through the header's declarations");
 }

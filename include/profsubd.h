@@ -498,6 +498,25 @@ enum profsubd_status profsubd_options_set_triangle_rule(struct profsubd_options 
                                                         int32_t rule);
 
 /**
+ * Refine `mesh` uniformly `level` times (0 to 8) with Catmull-Clark; `*out` receives the
+ * refined mesh, which the caller releases with `profsubd_mesh_free`.
+ *
+ * `options` may be NULL: the mesh's tags and the defaults apply. The refined mesh is in
+ * OpenSubdiv Far's order (`TopologyRefiner::RefineUniform`): vertices are the children of
+ * the vertices, then of the faces, then of the edges; faces are the quads of each parent
+ * face in turn; positions equal `PrimvarRefinerReal<double>::Interpolate`. It carries the
+ * decayed crease and corner sharpness, the holes and the options used as tags.
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` (mesh or out NULL), `PROFSUBD_ERROR_INVALID_HANDLE`,
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a level above 8 or a refined mesh above 2^26 face
+ * indices (a memory bound), or an out-of-range option.
+ */
+enum profsubd_status profsubd_refine_uniform(const struct profsubd_mesh *mesh,
+                                             const struct profsubd_options *options,
+                                             uint32_t level,
+                                             struct profsubd_mesh **out);
+
+/**
  * A fixed description of a status number: "unknown status" for a number that is none.
  * The string is static: never free it.
  */

@@ -15,6 +15,17 @@ fn profsubd(args: &[&str]) -> Output {
         .expect("run profsubd")
 }
 
+fn refine_to(input: &Path, level: &str, out: &Path) -> Output {
+    profsubd(&[
+        "refine",
+        input.to_str().unwrap(),
+        "--level",
+        level,
+        "-o",
+        out.to_str().unwrap(),
+    ])
+}
+
 fn example(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("examples/meshes")
@@ -26,14 +37,7 @@ fn refine_writes_far_ordered_mesh_with_decayed_tags() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("r.obj");
     let input = example("cube_creased.obj");
-    let o = profsubd(&[
-        "refine",
-        input.to_str().unwrap(),
-        "--level",
-        "2",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    let o = refine_to(&input, "2", &out);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let written = read_obj_file(&out).unwrap().mesh;
     assert_eq!(written.num_vertices(), 98);
@@ -61,24 +65,10 @@ fn refine_rejects_bad_input() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("r.obj");
     let input = example("cube_creased.obj");
-    let o = profsubd(&[
-        "refine",
-        input.to_str().unwrap(),
-        "--level",
-        "11",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    let o = refine_to(&input, "9", &out);
     assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("above the maximum 10"));
-    let o = profsubd(&[
-        "refine",
-        "/nonexistent/mesh.obj",
-        "--level",
-        "1",
-        "-o",
-        out.to_str().unwrap(),
-    ]);
+    assert!(String::from_utf8_lossy(&o.stderr).contains("above the maximum 8"));
+    let o = refine_to(Path::new("/nonexistent/mesh.obj"), "1", &out);
     assert_eq!(o.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&o.stderr).contains("/nonexistent/mesh.obj"));
     assert!(!out.exists());

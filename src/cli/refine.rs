@@ -16,7 +16,7 @@ pub struct RefineArgs {
     /// The OBJ mesh to refine.
     #[arg(value_name = "MESH.obj")]
     pub input: PathBuf,
-    /// Number of refinement levels (0 to 10).
+    /// Number of refinement levels (0 to 8).
     #[arg(short, long, value_name = "N")]
     pub level: u32,
     /// The OBJ file to write.

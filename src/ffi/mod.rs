@@ -58,6 +58,7 @@ pub mod mesh_topology;
 pub mod options;
 pub mod panic;
 pub mod ptr;
+pub mod refine;
 pub mod status;
 pub mod version;
 

@@ -22,20 +22,24 @@ pub use primvar::{interpolate, Primvar, SparseStencil};
 pub use step::{refine, Refinement, VertexOrder};
 
 use crate::error::{Error, Result};
-use crate::mesh::{Mesh, MAX_COMPONENTS};
+use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
 use crate::topology::Level;
 
 /// Highest refinement level accepted: each level multiplies the face count by about 4, so
-/// level 10 turns a single quad into a million faces.
-pub const MAX_LEVEL: u32 = 10;
+/// level 8 turns a single quad into 65,536 faces and a 10k-face mesh into 655 million.
+pub const MAX_LEVEL: u32 = 8;
+
+/// Largest number of face-vertex indices a refined mesh may have (2^26, about 16.7 million
+/// quads, a few GB of topology and positions): a bound on memory rather than on levels.
+pub const MAX_REFINED_FACE_INDICES: usize = 1 << 26;
 
 /// Refine `mesh` uniformly `level` times under `options`, child vertices in Far's default
 /// order (children of vertices, then of faces, then of edges).
 ///
 /// Level 0 returns the mesh with the options attached. Errors: [`Error::InvalidArgument`]
 /// if `level` exceeds [`MAX_LEVEL`] or the refined mesh would exceed
-/// [`MAX_COMPONENTS`] face-vertex indices.
+/// [`MAX_REFINED_FACE_INDICES`] face-vertex indices.
 pub fn refine_uniform(mesh: &Mesh, options: &SubdivOptions, level: u32) -> Result<Mesh> {
     refine_uniform_ordered(mesh, options, level, VertexOrder::VerticesFirst)
 }
@@ -67,9 +71,9 @@ pub fn refine_levels(
     }
     // Each level makes 4 face-vertex indices per parent face-vertex.
     let indices = mesh.face_indices().len() as f64 * 4f64.powi(level as i32);
-    if indices > MAX_COMPONENTS as f64 {
+    if indices > MAX_REFINED_FACE_INDICES as f64 {
         return Err(Error::invalid_argument(format!(
-            "refining {} face indices {level} times would give {indices:.0}, above the limit {MAX_COMPONENTS}",
+            "refining {} face indices {level} times would give {indices:.0}, above the limit {MAX_REFINED_FACE_INDICES}",
             mesh.face_indices().len()
         )));
     }

@@ -153,7 +153,8 @@ typedef struct profsubd_options profsubd_options;
 /**
  * Caller arrays describing a mesh, as OpenSubdiv's `Far::TopologyDescriptor`. All counts
  * are in elements of the array named; an array may be NULL when its count is 0. The arrays
- * are copied: the caller keeps ownership.
+ * are copied: the caller keeps ownership. Zero-initialize the struct (`= {0}` in C, `{}` in
+ * C++), set `struct_size`, then the arrays you have.
  */
 typedef struct profsubd_mesh_desc {
     /**

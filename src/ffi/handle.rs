@@ -15,8 +15,9 @@ use crate::ffi::status::profsubd_status::PROFSUBD_ERROR_INVALID_HANDLE;
 
 /// Links an opaque C type to the Rust object behind it.
 pub trait Handle {
-    /// The Rust object the handle owns.
-    type Inner;
+    /// The Rust object the handle owns. `Send + Sync`: C callers may share handles between
+    /// threads.
+    type Inner: Send + Sync;
     /// Tag of a live handle of this type: unique among handle types.
     const MAGIC: u64;
     /// The C type name, for messages.

@@ -84,7 +84,8 @@ pub unsafe fn mesh_arg<'a>(p: *const profsubd_mesh, name: &str) -> FfiResult<&'a
 
 /// Caller arrays describing a mesh, as OpenSubdiv's `Far::TopologyDescriptor`. All counts
 /// are in elements of the array named; an array may be NULL when its count is 0. The arrays
-/// are copied: the caller keeps ownership.
+/// are copied: the caller keeps ownership. Zero-initialize the struct (`= {0}` in C, `{}` in
+/// C++), set `struct_size`, then the arrays you have.
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct profsubd_mesh_desc {
@@ -130,6 +131,14 @@ fn check_count(name: &str, n: usize) -> FfiResult<()> {
     Ok(())
 }
 
+/// `n` items of `width` elements: cannot overflow on 64-bit targets after [`check_count`],
+/// checked for 32-bit ones.
+fn elements(n: usize, width: usize, name: &str) -> FfiResult<usize> {
+    n.checked_mul(width).ok_or_else(|| {
+        FfiError::invalid_argument(format!("desc->{name} is {n}: too large for this platform"))
+    })
+}
+
 /// Read the descriptor: its size first, so a smaller (older or garbage) struct is never read past.
 unsafe fn read_desc(desc: *const profsubd_mesh_desc) -> FfiResult<profsubd_mesh_desc> {
     let size = *crate::ffi::ptr::arg_ref(desc.cast::<usize>(), "desc")?;
@@ -158,10 +167,14 @@ unsafe fn parts_from_desc(d: &profsubd_mesh_desc) -> FfiResult<MeshParts> {
     ] {
         check_count(name, n)?;
     }
-    let positions = arg_slice(d.positions, 3 * d.num_vertices, "desc->positions")?;
+    let positions = arg_slice(
+        d.positions,
+        elements(d.num_vertices, 3, "num_vertices")?,
+        "desc->positions",
+    )?;
     let crease_vertices = arg_slice(
         d.crease_vertices,
-        2 * d.num_creases,
+        elements(d.num_creases, 2, "num_creases")?,
         "desc->crease_vertices",
     )?;
     let crease_sharpness = arg_slice(d.crease_sharpness, d.num_creases, "desc->crease_sharpness")?;
@@ -437,6 +450,16 @@ pub(crate) mod tests {
     use crate::ffi::status::profsubd_status::*;
     use std::ptr::{null, null_mut};
 
+    type Count = unsafe extern "C" fn(*const profsubd_mesh, *mut usize) -> profsubd_status;
+    const COUNTS: [Count; 6] = [
+        profsubd_mesh_num_vertices,
+        profsubd_mesh_num_faces,
+        profsubd_mesh_num_face_indices,
+        profsubd_mesh_num_creases,
+        profsubd_mesh_num_corners,
+        profsubd_mesh_num_holes,
+    ];
+
     /// The unit square as a one-quad mesh.
     pub(crate) fn quad_mesh() -> Mesh {
         Mesh::from_parts(MeshParts {
@@ -632,6 +655,28 @@ pub(crate) mod tests {
     }
 
     #[test]
+    fn absurd_capacities_are_rejected() {
+        let a = two_quads();
+        let m = new_mesh(&a);
+        let mut buf = [0u32; 4];
+        let mut d = [0f64; 4];
+        let mut n = 0;
+        unsafe {
+            let s = profsubd_mesh_get_positions(m, d.as_mut_ptr(), usize::MAX / 4, &mut n);
+            assert_eq!(s, PROFSUBD_ERROR_INVALID_ARGUMENT);
+            assert!(last_error().contains("larger than any buffer can be"));
+            let s = profsubd_mesh_get_creases(m, buf.as_mut_ptr(), null_mut(), usize::MAX, &mut n);
+            assert_eq!(s, PROFSUBD_ERROR_INVALID_ARGUMENT);
+            assert_eq!(
+                last_error(),
+                "capacity 18446744073709551615 is absurdly large"
+            );
+            profsubd_mesh_free(m);
+        }
+        assert_eq!((buf, d, n), ([0; 4], [0.0; 4], 0));
+    }
+
+    #[test]
     fn empty_data_needs_no_buffer() {
         let mut a = two_quads();
         a.crease_vertices.clear();
@@ -657,16 +702,7 @@ pub(crate) mod tests {
         let mut fbuf = [0f32; 8];
         let mut dbuf = [0f64; 18];
         unsafe {
-            type Count = unsafe extern "C" fn(*const profsubd_mesh, *mut usize) -> profsubd_status;
-            let counts: [Count; 6] = [
-                profsubd_mesh_num_vertices,
-                profsubd_mesh_num_faces,
-                profsubd_mesh_num_face_indices,
-                profsubd_mesh_num_creases,
-                profsubd_mesh_num_corners,
-                profsubd_mesh_num_holes,
-            ];
-            for f in counts {
+            for f in COUNTS {
                 assert_eq!(f(null(), &mut n), PROFSUBD_ERROR_NULL_ARGUMENT);
                 assert_eq!(last_error(), "argument `mesh` is NULL");
                 assert_eq!(f(m, null_mut()), PROFSUBD_ERROR_NULL_ARGUMENT);
@@ -747,10 +783,9 @@ pub(crate) mod tests {
         unsafe {
             crate::ffi::options::profsubd_options_new(&mut o);
             for h in [o.cast::<profsubd_mesh>(), fake.as_mut_ptr().cast()] {
-                assert_eq!(
-                    profsubd_mesh_num_vertices(h, &mut n),
-                    PROFSUBD_ERROR_INVALID_HANDLE
-                );
+                for f in COUNTS {
+                    assert_eq!(f(h, &mut n), PROFSUBD_ERROR_INVALID_HANDLE);
+                }
                 assert_eq!(
                     last_error(),
                     "argument `mesh` is not a live profsubd_mesh (freed, or another kind of object)"

@@ -1,17 +1,27 @@
-//! Exact limit evaluation: positions, derivatives and stencils on control vertices.
+//! Exact limit evaluation: positions, derivatives and stencils.
 //!
 //! - [`limit_stencils`]: the exact limit position of every control vertex as weights on
 //!   the control vertices (what the profile fitter solves with);
 //! - [`limit_vertex_samples`] / [`vertex_limit_stencils`]: positions and derivatives at the
 //!   control vertices ([`vertex_limit`] documents the conventions);
+//! - [`Evaluator`] ([`evaluator`]): the limit surface at any `(face, u, v)`, addressed as
+//!   [`ptex`] documents; [`bspline`], [`patch_regular`], [`patch_topology`]: regular bicubic
+//!   patches, when a face is one, and the neighbourhoods refined until it is;
 //! - [`StencilTable`], [`LimitSample`]: the shared result types.
 
+pub mod bspline;
 mod dense;
+pub mod evaluator;
+pub mod patch_corner;
+pub mod patch_regular;
+pub mod patch_topology;
+pub mod ptex;
 pub mod sample;
 pub mod stencil;
 pub mod vertex_limit;
 mod vertex_ring;
 
+pub use evaluator::Evaluator;
 pub use sample::LimitSample;
 pub use stencil::StencilTable;
 pub use vertex_limit::{

@@ -1,0 +1,329 @@
+//! The exact limit surface at any `(face, u, v)`: position and first derivatives.
+//!
+//! Faces are addressed by OpenSubdiv's Ptex numbering (see [`super::ptex`]). Each parametric
+//! face is the root of a quadtree built at construction: a quad whose corners are regular is a
+//! bicubic B-spline leaf ([`super::patch_regular`]); any other quad is refined one level —
+//! only its neighbourhood, see [`super::patch_topology`] — and each of its four children is
+//! treated the same way, down to [`CACHE_DEPTH`]. Below that depth (only near extraordinary
+//! vertices, darts and slowly decaying sharpness) a point is evaluated by refining its
+//! neighbourhood further on the spot until it falls into a regular sub-patch. A point exactly
+//! on a vertex that never becomes regular (an extraordinary vertex, a dart, ...) takes the
+//! vertex's exact limit. Derivatives are with respect to the Ptex face's `(u, v)`: a leaf at
+//! depth `d` is scaled by `2^d`.
+//!
+//! Evaluation allocates nothing except below [`CACHE_DEPTH`]; the evaluator is immutable and
+//! `Sync`, so many threads may evaluate at once.
+
+use super::bspline::BicubicPatch;
+use super::patch_regular::regular_patch;
+use super::patch_topology::Neighbourhood;
+use super::ptex::PtexFaces;
+use super::sample::LimitSample;
+use crate::error::{Error, Result};
+use crate::mesh::Mesh;
+use crate::options::{BoundaryInterpolation, SubdivOptions};
+use crate::refine::refine_uniform;
+
+/// Depth to which irregular faces are refined and cached at construction.
+pub const CACHE_DEPTH: u32 = 5;
+
+/// Deepest on-the-spot refinement; a point still not in a regular sub-patch there is within
+/// `2^-MAX_DEPTH` of a vertex and takes that vertex's limit.
+const MAX_DEPTH: u32 = 96;
+
+/// One quadtree node.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Node {
+    /// A regular leaf: index into `patches`.
+    Patch(u32),
+    /// Refined: the four children are nodes `first..first + 4`, in quadrant order
+    /// (0 at `(0,0)`, 1 at `(1,0)`, 2 at `(1,1)`, 3 at `(0,1)`).
+    Split(u32),
+    /// Not regular at the cache depth: index into `deep` (the neighbourhood, refined on demand).
+    Deep(u32),
+    /// A face without limit surface (hole, or boundary rule "none").
+    NoSurface,
+}
+
+/// Exact Catmull-Clark limit evaluator for one control mesh and one set of options.
+#[derive(Debug, Clone)]
+pub struct Evaluator {
+    mesh: Mesh,
+    options: SubdivOptions,
+    ptex: PtexFaces,
+    roots: Vec<u32>,
+    nodes: Vec<Node>,
+    patches: Vec<BicubicPatch>,
+    deep: Vec<Neighbourhood>,
+}
+
+impl Evaluator {
+    /// Build the evaluator of `mesh` under `options` (the caller's resolved options; the
+    /// mesh's own tags are not consulted here).
+    ///
+    /// Errors: [`Error::InvalidMesh`] when the mesh has more parametric faces than fit in
+    /// `u32`; errors of the refinement of an irregular neighbourhood.
+    pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
+        let ptex = PtexFaces::new(mesh)?;
+        let global = Neighbourhood::from_mesh(mesh);
+        let no_surface = faces_without_surface(mesh, &global, options);
+        let mut ev = Evaluator {
+            mesh: mesh.clone(),
+            options: *options,
+            ptex,
+            roots: Vec::new(),
+            nodes: Vec::new(),
+            patches: Vec::new(),
+            deep: Vec::new(),
+        };
+        ev.roots.reserve(ev.ptex.len());
+        for f in 0..mesh.num_faces() {
+            let size = mesh.face_sizes()[f];
+            if no_surface[f] {
+                let count = if size == 4 { 1 } else { size };
+                for _ in 0..count {
+                    let n = ev.push_node(Node::NoSurface);
+                    ev.roots.push(n);
+                }
+                continue;
+            }
+            if size == 4 {
+                let node = match regular_patch(&global, f as u32, options) {
+                    Some(p) => ev.leaf(p),
+                    None => ev.build(global.around_face(f as u32), 0)?,
+                };
+                let n = ev.push_node(node);
+                ev.roots.push(n);
+            } else {
+                // A non-quad's sub-faces are its children after one refinement, in corner order.
+                let refined = refine_once(&global.around_face(f as u32), options)?;
+                for k in 0..size {
+                    let node = ev.build(refined.around_face(k), 1)?;
+                    let n = ev.push_node(node);
+                ev.roots.push(n);
+                }
+            }
+        }
+        Ok(ev)
+    }
+
+    /// The options this evaluator applies.
+    pub fn options(&self) -> &SubdivOptions {
+        &self.options
+    }
+
+    /// The control mesh.
+    pub fn mesh(&self) -> &Mesh {
+        &self.mesh
+    }
+
+    /// The Ptex numbering of the mesh's faces (how `face` in [`Evaluator::evaluate`] is meant).
+    pub fn ptex_faces(&self) -> &PtexFaces {
+        &self.ptex
+    }
+
+    /// Number of parametric faces: the valid range of `face` in [`Evaluator::evaluate`].
+    pub fn num_parametric_faces(&self) -> usize {
+        self.ptex.len()
+    }
+
+    fn push_node(&mut self, n: Node) -> u32 {
+        self.nodes.push(n);
+        (self.nodes.len() - 1) as u32
+    }
+
+    fn leaf(&mut self, p: BicubicPatch) -> Node {
+        self.patches.push(p);
+        Node::Patch((self.patches.len() - 1) as u32)
+    }
+
+    /// The node for face 0 of `nb`, refined down to [`CACHE_DEPTH`].
+    fn build(&mut self, nb: Neighbourhood, depth: u32) -> Result<Node> {
+        if let Some(p) = regular_patch(&nb, 0, &self.options) {
+            return Ok(self.leaf(p));
+        }
+        if depth >= CACHE_DEPTH {
+            self.deep.push(nb);
+            return Ok(Node::Deep((self.deep.len() - 1) as u32));
+        }
+        let refined = refine_once(&nb, &self.options)?;
+        let first = self.nodes.len() as u32;
+        self.nodes.extend([Node::NoSurface; 4]);
+        for q in 0..4u32 {
+            let child = self.build(refined.around_face(q), depth + 1)?;
+            self.nodes[(first + q) as usize] = child;
+        }
+        Ok(Node::Split(first))
+    }
+
+    /// Limit position and derivatives at `(u, v)` of parametric face `face`.
+    ///
+    /// Errors ([`Error::InvalidArgument`]): `face` out of range, `u` or `v` outside `[0, 1]`
+    /// or NaN, a hole face, a face without limit surface (boundary interpolation "none").
+    pub fn evaluate(&self, face: u32, u: f64, v: f64) -> Result<LimitSample> {
+        let Some(&root) = self.roots.get(face as usize) else {
+            return Err(Error::invalid_argument(format!(
+                "face {face} is out of range; the mesh has {} parametric faces",
+                self.roots.len()
+            )));
+        };
+        if !(0.0..=1.0).contains(&u) || !(0.0..=1.0).contains(&v) {
+            return Err(Error::invalid_argument(format!(
+                "(u, v) = ({u}, {v}) on face {face} is outside [0, 1]"
+            )));
+        }
+        let (mut node, mut s, mut t, mut scale) = (root, u, v, 1.0);
+        loop {
+            match self.nodes[node as usize] {
+                Node::Patch(p) => {
+                    let (position, ds, dt) = self.patches[p as usize].evaluate(s, t);
+                    return Ok(LimitSample {
+                        position,
+                        du: ds * scale,
+                        dv: dt * scale,
+                    });
+                }
+                Node::Split(first) => {
+                    let (q, cs, ct) = quadrant(s, t);
+                    node = first + q;
+                    (s, t, scale) = (cs, ct, scale * 2.0);
+                }
+                Node::Deep(d) => return self.evaluate_deep(&self.deep[d as usize], s, t, scale),
+                Node::NoSurface => return Err(self.no_surface_error(face)),
+            }
+        }
+    }
+
+    fn no_surface_error(&self, face: u32) -> Error {
+        let base = self.ptex.locate(face).map_or(face, |(f, _)| f);
+        if self.mesh.holes().contains(&base) {
+            Error::invalid_argument(format!("face {face} is a hole: it has no limit surface"))
+        } else {
+            Error::invalid_argument(format!(
+                "face {face} has no limit surface: it touches the boundary and the boundary \
+                 interpolation is \"none\""
+            ))
+        }
+    }
+
+    /// Evaluate many points; `faces`, `u` and `v` must have the same length. Stops at the
+    /// first bad point, naming its index.
+    pub fn evaluate_many(&self, faces: &[u32], u: &[f64], v: &[f64]) -> Result<Vec<LimitSample>> {
+        if faces.len() != u.len() || faces.len() != v.len() {
+            return Err(Error::invalid_argument(format!(
+                "{} faces, {} u and {} v values: the three lists must have the same length",
+                faces.len(),
+                u.len(),
+                v.len()
+            )));
+        }
+        let mut out = Vec::with_capacity(faces.len());
+        for i in 0..faces.len() {
+            out.push(
+                self.evaluate(faces[i], u[i], v[i])
+                    .map_err(|e| Error::invalid_argument(format!("point {i}: {e}")))?,
+            );
+        }
+        Ok(out)
+    }
+
+    /// Refine `nb` on the spot until `(s, t)` lies in a regular sub-patch.
+    fn evaluate_deep(&self, nb: &Neighbourhood, s: f64, t: f64, scale: f64) -> Result<LimitSample> {
+        let mut owned;
+        let mut nb = nb;
+        let (mut s, mut t, mut scale) = (s, t, scale);
+        for _ in CACHE_DEPTH..MAX_DEPTH {
+            if let Some(p) = regular_patch(nb, 0, &self.options) {
+                let (position, ds, dt) = p.evaluate(s, t);
+                return Ok(LimitSample {
+                    position,
+                    du: ds * scale,
+                    dv: dt * scale,
+                });
+            }
+            if let Some(k) = corner_at(s, t) {
+                if let Some(sample) = super::patch_corner::corner_limit(nb, k, &self.options, scale)? {
+                    return Ok(sample);
+                }
+            }
+            let refined = refine_once(nb, &self.options)?;
+            let (q, cs, ct) = quadrant(s, t);
+            owned = refined.around_face(q);
+            nb = &owned;
+            (s, t, scale) = (cs, ct, scale * 2.0);
+        }
+        let k = nearest_corner(s, t);
+        super::patch_corner::corner_limit(nb, k, &self.options, scale)?.ok_or_else(|| {
+            Error::NumericalFailure(format!(
+                "no regular sub-patch within {MAX_DEPTH} levels of refinement"
+            ))
+        })
+    }
+}
+
+/// One level of refinement of a neighbourhood; the children of its face 0 are faces
+/// `0..n` of the result (Far's child order).
+fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourhood> {
+    let mesh = nb.to_mesh(options)?;
+    Ok(Neighbourhood::from_mesh(&refine_uniform(&mesh, options, 1)?))
+}
+
+/// The quadrant of `(s, t)` and the coordinates in it. Quadrant `q` is child `q` of a quad
+/// in Far's refinement, with the same orientation.
+#[inline]
+fn quadrant(s: f64, t: f64) -> (u32, f64, f64) {
+    let right = s >= 0.5;
+    let top = t >= 0.5;
+    let q = match (right, top) {
+        (false, false) => 0,
+        (true, false) => 1,
+        (true, true) => 2,
+        (false, true) => 3,
+    };
+    let cs = if right { 2.0 * s - 1.0 } else { 2.0 * s };
+    let ct = if top { 2.0 * t - 1.0 } else { 2.0 * t };
+    (q, cs, ct)
+}
+
+/// The corner `(s, t)` is exactly on, if any.
+fn corner_at(s: f64, t: f64) -> Option<usize> {
+    match (s, t) {
+        (0.0, 0.0) => Some(0),
+        (1.0, 0.0) => Some(1),
+        (1.0, 1.0) => Some(2),
+        (0.0, 1.0) => Some(3),
+        _ => None,
+    }
+}
+
+fn nearest_corner(s: f64, t: f64) -> usize {
+    match (s >= 0.5, t >= 0.5) {
+        (false, false) => 0,
+        (true, false) => 1,
+        (true, true) => 2,
+        (false, true) => 3,
+    }
+}
+
+/// Faces with no limit surface: holes, and under boundary interpolation "none" the faces at
+/// a boundary vertex that has a boundary edge not tagged infinitely sharp (Far's rule).
+fn faces_without_surface(mesh: &Mesh, nb: &Neighbourhood, options: &SubdivOptions) -> Vec<bool> {
+    let mut out = vec![false; mesh.num_faces()];
+    for &h in mesh.holes() {
+        out[h as usize] = true;
+    }
+    if options.boundary == BoundaryInterpolation::None {
+        for v in 0..mesh.num_vertices() as u32 {
+            if super::patch_regular::has_soft_boundary_edge(nb, v) {
+                for &f in nb.vertex_faces(v) {
+                    out[f as usize] = true;
+                }
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+#[path = "evaluator_tests.rs"]
+mod tests;

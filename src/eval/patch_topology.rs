@@ -1,0 +1,213 @@
+//! Small face neighbourhoods for the (face, u, v) evaluator.
+//!
+//! A [`Neighbourhood`] is a mesh fragment in flat arrays (faces, vertex-to-face incidence,
+//! crease and corner tags) built either from a whole control mesh or as the faces around one
+//! face: every face that shares a vertex with it. That fragment is exactly what one level of
+//! Catmull-Clark refinement needs to produce the face's children *and their own
+//! neighbourhoods* correctly — vertex points need their vertex's faces, edge points the two
+//! faces of their edge, and (Chaikin) child edge sharpness only the edges at the same vertex —
+//! so the evaluator refines small fragments instead of the whole mesh. Vertices and edges at
+//! the rim of a fragment come out wrong after refinement; they are never used.
+
+use std::collections::HashMap;
+
+use glam::DVec3;
+
+use crate::error::Result;
+use crate::mesh::{Corner, Crease, Mesh, MeshParts};
+use crate::options::{PartialOptions, SubdivOptions};
+
+/// A mesh fragment with the adjacency the evaluator's patch tests need.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Neighbourhood {
+    pub(crate) positions: Vec<DVec3>,
+    face_offsets: Vec<u32>,
+    face_indices: Vec<u32>,
+    vf_offsets: Vec<u32>,
+    vf_faces: Vec<u32>,
+    /// Crease tags keyed by (smaller, larger) vertex index; absent = 0.
+    edge_tags: HashMap<(u32, u32), f32>,
+    /// Corner tags, one per vertex (0 = none).
+    vertex_tags: Vec<f32>,
+}
+
+impl Neighbourhood {
+    /// The whole of `mesh`.
+    pub fn from_mesh(mesh: &Mesh) -> Neighbourhood {
+        let mut edge_tags = HashMap::with_capacity(mesh.creases().len());
+        for c in mesh.creases() {
+            let [a, b] = c.vertices;
+            // Far keeps the last value given for an edge; so do we.
+            edge_tags.insert((a.min(b), a.max(b)), c.sharpness);
+        }
+        let mut vertex_tags = vec![0.0f32; mesh.num_vertices()];
+        for c in mesh.corners() {
+            vertex_tags[c.vertex as usize] = c.sharpness;
+        }
+        Neighbourhood::assemble(
+            mesh.positions().to_vec(),
+            mesh.face_offsets().to_vec(),
+            mesh.face_indices().to_vec(),
+            edge_tags,
+            vertex_tags,
+        )
+    }
+
+    fn assemble(
+        positions: Vec<DVec3>,
+        face_offsets: Vec<u32>,
+        face_indices: Vec<u32>,
+        edge_tags: HashMap<(u32, u32), f32>,
+        vertex_tags: Vec<f32>,
+    ) -> Neighbourhood {
+        let nv = positions.len();
+        let mut vf_offsets = vec![0u32; nv + 1];
+        for &v in &face_indices {
+            vf_offsets[v as usize + 1] += 1;
+        }
+        for i in 0..nv {
+            vf_offsets[i + 1] += vf_offsets[i];
+        }
+        let mut fill = vf_offsets.clone();
+        let mut vf_faces = vec![0u32; face_indices.len()];
+        for f in 0..face_offsets.len() - 1 {
+            for &v in &face_indices[face_offsets[f] as usize..face_offsets[f + 1] as usize] {
+                let slot = &mut fill[v as usize];
+                // A face that repeats a vertex is listed once per occurrence; the patch tests
+                // treat such vertices as irregular anyway.
+                vf_faces[*slot as usize] = f as u32;
+                *slot += 1;
+            }
+        }
+        Neighbourhood {
+            positions,
+            face_offsets,
+            face_indices,
+            vf_offsets,
+            vf_faces,
+            edge_tags,
+            vertex_tags,
+        }
+    }
+
+    /// Number of faces.
+    pub fn num_faces(&self) -> usize {
+        self.face_offsets.len() - 1
+    }
+
+    /// Vertices of face `f`.
+    #[inline]
+    pub fn face(&self, f: u32) -> &[u32] {
+        &self.face_indices[self.face_offsets[f as usize] as usize..self.face_offsets[f as usize + 1] as usize]
+    }
+
+    /// Faces incident to vertex `v` (a face repeating `v` appears once per occurrence).
+    #[inline]
+    pub fn vertex_faces(&self, v: u32) -> &[u32] {
+        &self.vf_faces[self.vf_offsets[v as usize] as usize..self.vf_offsets[v as usize + 1] as usize]
+    }
+
+    /// The crease tag of edge `(a, b)` (0 when untagged).
+    #[inline]
+    pub fn edge_tag(&self, a: u32, b: u32) -> f32 {
+        if self.edge_tags.is_empty() {
+            return 0.0;
+        }
+        *self.edge_tags.get(&(a.min(b), a.max(b))).unwrap_or(&0.0)
+    }
+
+    /// The corner tag of vertex `v` (0 when untagged).
+    #[inline]
+    pub fn vertex_tag(&self, v: u32) -> f32 {
+        self.vertex_tags[v as usize]
+    }
+
+    /// Position of vertex `v`.
+    #[inline]
+    pub fn position(&self, v: u32) -> DVec3 {
+        self.positions[v as usize]
+    }
+
+    /// The faces sharing a vertex with face `f`, as a new fragment whose face 0 is `f` and
+    /// whose vertices 0..n are `f`'s vertices in order.
+    pub fn around_face(&self, f: u32) -> Neighbourhood {
+        let mut faces: Vec<u32> = vec![f];
+        for &v in self.face(f) {
+            for &g in self.vertex_faces(v) {
+                if !faces.contains(&g) {
+                    faces.push(g);
+                }
+            }
+        }
+        let mut remap: HashMap<u32, u32> = HashMap::with_capacity(faces.len() * 4);
+        let mut globals: Vec<u32> = Vec::with_capacity(faces.len() * 2 + 4);
+        let mut positions = Vec::with_capacity(faces.len() * 2 + 4);
+        let mut vertex_tags = Vec::with_capacity(faces.len() * 2 + 4);
+        let mut face_offsets = Vec::with_capacity(faces.len() + 1);
+        let mut face_indices = Vec::with_capacity(faces.len() * 4);
+        face_offsets.push(0u32);
+        for &g in &faces {
+            for &v in self.face(g) {
+                let local = *remap.entry(v).or_insert_with(|| {
+                    globals.push(v);
+                    positions.push(self.positions[v as usize]);
+                    vertex_tags.push(self.vertex_tags[v as usize]);
+                    (positions.len() - 1) as u32
+                });
+                face_indices.push(local);
+            }
+            face_offsets.push(face_indices.len() as u32);
+        }
+        let mut edge_tags = HashMap::new();
+        if !self.edge_tags.is_empty() {
+            for w in face_offsets.windows(2) {
+                let face = &face_indices[w[0] as usize..w[1] as usize];
+                for (i, &a) in face.iter().enumerate() {
+                    let b = face[(i + 1) % face.len()];
+                    let s = self.edge_tag(globals[a as usize], globals[b as usize]);
+                    if s > 0.0 {
+                        edge_tags.insert((a.min(b), a.max(b)), s);
+                    }
+                }
+            }
+        }
+        Neighbourhood::assemble(positions, face_offsets, face_indices, edge_tags, vertex_tags)
+    }
+
+    /// This fragment as a validated [`Mesh`] with `options` attached, to be refined.
+    pub fn to_mesh(&self, options: &SubdivOptions) -> Result<Mesh> {
+        let mut creases: Vec<Crease> = self
+            .edge_tags
+            .iter()
+            .map(|(&(a, b), &s)| Crease {
+                vertices: [a, b],
+                sharpness: s,
+            })
+            .collect();
+        creases.sort_by_key(|c| c.vertices);
+        let corners = self
+            .vertex_tags
+            .iter()
+            .enumerate()
+            .filter(|(_, &s)| s > 0.0)
+            .map(|(v, &s)| Corner {
+                vertex: v as u32,
+                sharpness: s,
+            })
+            .collect();
+        let face_sizes = self.face_offsets.windows(2).map(|w| w[1] - w[0]).collect();
+        Mesh::from_parts(MeshParts {
+            positions: self.positions.clone(),
+            face_sizes,
+            face_indices: self.face_indices.clone(),
+            creases,
+            corners,
+            holes: Vec::new(),
+            options: PartialOptions {
+                boundary: Some(options.boundary),
+                crease_method: Some(options.crease_method),
+                triangles: Some(options.triangles),
+            },
+        })
+    }
+}

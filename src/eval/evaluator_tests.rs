@@ -143,3 +143,163 @@ fn bad_input_is_rejected_with_a_reason() {
     assert!(msg(ev.evaluate(0, 0.5, 0.5)).contains("no limit surface"));
     assert!(ev.evaluate_many(&[0, 1], &[0.5], &[0.5, 0.5]).is_err());
 }
+
+/// The level-`level` face whose corner 0 is at `(i, j) / 2^level` of Ptex face `ptex` (for
+/// a non-quad's sub-face, itself a level-1 face, at `(i, j) / 2^(level - 1)`), for
+/// Far's child face order (children of face `f` start at the sum of the sizes of the faces
+/// before it; a quad's child `q` is its quadrant `q`, with corner 0 at the lower left).
+fn descendant(mesh: &Mesh, ptex: u32, i: u32, j: u32, level: u32) -> u32 {
+    let p = crate::eval::ptex::PtexFaces::new(mesh).unwrap();
+    let (f, sub) = p.locate(ptex).unwrap();
+    let offset = mesh.face_offsets()[f as usize];
+    let quadrant = |b: u32| {
+        let (r, t) = ((i >> b) & 1, (j >> b) & 1);
+        [[0, 3], [1, 2]][r as usize][t as usize]
+    };
+    let (mut idx, mut bits) = match sub {
+        Some(k) => (offset + k, level - 1),
+        None => (offset + quadrant(level - 1), level - 1),
+    };
+    while bits > 0 {
+        bits -= 1;
+        idx = idx * 4 + quadrant(bits);
+    }
+    idx
+}
+
+/// The limit of a smooth valence-4 vertex: `(16 w + 4 Σ edge ends + Σ diagonals) / 36`.
+fn smooth_limit(refined: &Mesh, w: u32) -> DVec3 {
+    let nb = crate::eval::patch_topology::Neighbourhood::from_mesh(refined);
+    let faces = nb.vertex_faces(w);
+    assert_eq!(faces.len(), 4, "vertex {w} is not regular");
+    let mut sum = 16.0 * nb.position(w);
+    for &g in faces {
+        let face = nb.face(g);
+        assert_eq!(face.len(), 4);
+        let k = face.iter().position(|&x| x == w).unwrap();
+        // Each edge end is seen from two faces: 4 · e counted as 2 · e twice.
+        sum += 2.0 * (nb.position(face[(k + 1) % 4]) + nb.position(face[(k + 3) % 4]));
+        sum += nb.position(face[(k + 2) % 4]);
+    }
+    sum / 36.0_f64
+}
+
+fn cube() -> MeshParts {
+    let positions = (0..8)
+        .map(|k| DVec3::new((k & 1) as f64, ((k >> 1) & 1) as f64, ((k >> 2) & 1) as f64))
+        .map(|p| p + DVec3::new(0.1 * p.y * p.z, -0.2 * p.x * p.z, 0.05 * p.x))
+        .collect();
+    MeshParts {
+        positions,
+        face_sizes: vec![4; 6],
+        face_indices: vec![
+            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
+        ],
+        ..Default::default()
+    }
+}
+
+/// A square pyramid (a quad and four triangles) with an extra pentagon-topped side: mixed
+/// face sizes and extraordinary vertices of valence 3, 4 and 5.
+fn mixed() -> MeshParts {
+    MeshParts {
+        positions: vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.1),
+            DVec3::new(1.2, 1.0, 0.0),
+            DVec3::new(0.0, 1.1, -0.1),
+            DVec3::new(0.5, 0.5, 1.0),
+            DVec3::new(-0.6, 0.5, 0.4),
+        ],
+        face_sizes: vec![4, 3, 3, 3, 3, 3],
+        face_indices: vec![0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 5, 4, 5, 0, 4],
+        ..Default::default()
+    }
+}
+
+fn check_against_refinement(parts: MeshParts, options: SubdivOptions, what: &str) {
+    let mesh = Mesh::from_parts(parts).unwrap();
+    let ev = Evaluator::new(&mesh, &options).unwrap();
+    let scale = mesh.bounding_box_diagonal();
+    for level in 2..=4u32 {
+        let refined = crate::refine::refine_uniform(&mesh, &options, level).unwrap();
+        for ptex in 0..ev.num_parametric_faces() as u32 {
+            let sub = ev.ptex_faces().locate(ptex).unwrap().1.is_some();
+            let n = 1u32 << (level - u32::from(sub));
+            for (i, j) in [(1, 1), (n - 1, 1), (n / 2, n - 1), (1, (n / 2 + 1).min(n - 1)), (n - 1, n - 1)] {
+                let f = descendant(&mesh, ptex, i, j, level);
+                let w = refined.face(f as usize)[0];
+                let want = smooth_limit(&refined, w);
+                let got = ev
+                    .evaluate(ptex, f64::from(i) / f64::from(n), f64::from(j) / f64::from(n))
+                    .unwrap()
+                    .position;
+                assert!(
+                    (got - want).length() <= 1e-13 * scale,
+                    "{what}: face {ptex} ({i}, {j})/{n}: {got} vs {want}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn extraordinary_vertices_agree_with_deep_refinement() {
+    check_against_refinement(cube(), SubdivOptions::default(), "cube");
+    check_against_refinement(mixed(), SubdivOptions::default(), "mixed");
+}
+
+#[test]
+fn semi_sharp_features_agree_with_deep_refinement() {
+    for method in [crate::CreaseMethod::Uniform, crate::CreaseMethod::Chaikin] {
+        let mut parts = cube();
+        for (a, b, s) in [(0, 2, 2.5f32), (2, 3, 1.25), (3, 1, 3.0), (0, 4, 0.5)] {
+            parts.creases.push(Crease {
+                vertices: [a, b],
+                sharpness: s,
+            });
+        }
+        parts.corners.push(crate::Corner {
+            vertex: 7,
+            sharpness: 1.75,
+        });
+        let options = SubdivOptions {
+            crease_method: method,
+            ..Default::default()
+        };
+        check_against_refinement(parts, options, "creased cube");
+    }
+}
+
+#[test]
+fn open_meshes_agree_with_deep_refinement_under_each_boundary_rule() {
+    // The mixed mesh without its base quad: an open cup with a boundary of 4 edges.
+    let mut parts = mixed();
+    parts.face_sizes.remove(0);
+    parts.face_indices.drain(0..4);
+    for boundary in [BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner] {
+        let options = SubdivOptions {
+            boundary,
+            ..Default::default()
+        };
+        check_against_refinement(parts.clone(), options, "cup");
+    }
+}
+
+#[test]
+fn derivatives_near_extraordinary_vertices_match_finite_differences() {
+    let mesh = Mesh::from_parts(mixed()).unwrap();
+    let ev = Evaluator::new(&mesh, &SubdivOptions::default()).unwrap();
+    let h = 1e-7;
+    for ptex in 0..ev.num_parametric_faces() as u32 {
+        for &(u, v) in &[(0.01, 0.02), (0.3, 0.001), (0.97, 0.99), (0.5, 0.25)] {
+            let s = ev.evaluate(ptex, u, v).unwrap();
+            let p = |u, v| ev.evaluate(ptex, u, v).unwrap().position;
+            let fu = (p(u + h, v) - p(u - h, v)) / (2.0 * h);
+            let fv = (p(u, v + h) - p(u, v - h)) / (2.0 * h);
+            let tol = 1e-6 * (1.0 + s.du.length() + s.dv.length());
+            assert!((s.du - fu).length() < tol, "face {ptex} ({u}, {v}): {} vs {fu}", s.du);
+            assert!((s.dv - fv).length() < tol, "face {ptex} ({u}, {v}): {} vs {fv}", s.dv);
+        }
+    }
+}

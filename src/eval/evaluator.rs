@@ -219,10 +219,10 @@ impl Evaluator {
         }
         let mut out = Vec::with_capacity(faces.len());
         for i in 0..faces.len() {
-            out.push(
-                self.evaluate(faces[i], u[i], v[i])
-                    .map_err(|e| Error::invalid_argument(format!("point {i}: {e}")))?,
-            );
+            out.push(self.evaluate(faces[i], u[i], v[i]).map_err(|e| match e {
+                Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
+                other => other,
+            })?);
         }
         Ok(out)
     }

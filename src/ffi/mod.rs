@@ -51,6 +51,7 @@
 #![allow(clippy::missing_safety_doc)]
 
 pub mod error;
+pub mod evaluator;
 pub mod handle;
 pub mod mesh;
 pub mod mesh_io;
@@ -62,6 +63,7 @@ pub mod refine;
 pub mod status;
 pub mod version;
 
+pub use evaluator::profsubd_evaluator;
 pub use mesh::{profsubd_mesh, profsubd_mesh_desc};
 pub use mesh_topology::profsubd_mesh_report;
 pub use options::profsubd_options;

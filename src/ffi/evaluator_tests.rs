@@ -1,0 +1,166 @@
+//! Tests of the evaluator C functions, bad input first.
+
+use std::ptr::{null, null_mut};
+
+use glam::DVec3;
+
+use super::*;
+use crate::ffi::error::last_error;
+use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh_free};
+use crate::ffi::status::profsubd_status::*;
+use crate::mesh::{Mesh, MeshParts};
+use crate::options::SubdivOptions;
+
+/// A closed cube, with a triangle fan replacing its top (mixed face sizes).
+fn mesh() -> Mesh {
+    let mut positions: Vec<DVec3> = (0..8)
+        .map(|k| DVec3::new((k & 1) as f64, ((k >> 1) & 1) as f64, ((k >> 2) & 1) as f64))
+        .collect();
+    positions.push(DVec3::new(0.5, 0.5, 1.3));
+    Mesh::from_parts(MeshParts {
+        positions,
+        face_sizes: vec![4, 4, 4, 4, 4, 3, 3, 3, 3],
+        face_indices: vec![
+            0, 2, 3, 1, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5, 4, 5, 8, 5, 7, 8, 7, 6,
+            8, 6, 4, 8,
+        ],
+        holes: vec![1],
+        ..Default::default()
+    })
+    .unwrap()
+}
+
+fn evaluator() -> *mut profsubd_evaluator {
+    let m = new_mesh_handle(mesh());
+    let mut ev = null_mut();
+    unsafe {
+        assert_eq!(profsubd_evaluator_new(m, null(), &mut ev), PROFSUBD_OK);
+        profsubd_mesh_free(m);
+    }
+    ev
+}
+
+#[test]
+fn evaluate_returns_what_the_rust_api_returns() {
+    let ev = evaluator();
+    let rust = Evaluator::new(&mesh(), &SubdivOptions::default()).unwrap();
+    let faces = [0u32, 2, 5, 7, 16];
+    let u = [0.25, 0.0, 0.5, 1.0, 0.9];
+    let v = [0.75, 0.0, 0.5, 0.3, 0.1];
+    let (mut p, mut du, mut dv) = ([0.0; 15], [0.0; 15], [0.0; 15]);
+    unsafe {
+        let mut n = 0;
+        assert_eq!(profsubd_evaluator_num_parametric_faces(ev, &mut n), PROFSUBD_OK);
+        assert_eq!(n, 5 + 4 * 3);
+        let (mut first, mut count) = (0, 0);
+        assert_eq!(
+            profsubd_evaluator_face_to_parametric(ev, 6, &mut first, &mut count),
+            PROFSUBD_OK
+        );
+        assert_eq!((first, count), (8, 3));
+        let st = profsubd_evaluator_evaluate(
+            ev,
+            faces.as_ptr(),
+            u.as_ptr(),
+            v.as_ptr(),
+            5,
+            p.as_mut_ptr(),
+            du.as_mut_ptr(),
+            dv.as_mut_ptr(),
+        );
+        assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+        // Derivatives are optional.
+        let mut p2 = [0.0; 15];
+        let st = profsubd_evaluator_evaluate(
+            ev,
+            faces.as_ptr(),
+            u.as_ptr(),
+            v.as_ptr(),
+            5,
+            p2.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_OK);
+        assert_eq!(p, p2);
+        profsubd_evaluator_free(ev);
+    }
+    for i in 0..5 {
+        let s = rust.evaluate(faces[i], u[i], v[i]).unwrap();
+        assert_eq!(&p[3 * i..3 * i + 3], &s.position.to_array());
+        assert_eq!(&du[3 * i..3 * i + 3], &s.du.to_array());
+        assert_eq!(&dv[3 * i..3 * i + 3], &s.dv.to_array());
+    }
+}
+
+#[test]
+fn bad_input_gives_a_status_and_a_message_and_writes_nothing() {
+    let ev = evaluator();
+    let mut p = [7.0; 3];
+    let f = [0u32];
+    let half = [0.5];
+    unsafe {
+        let call = |ev, faces: &[u32], u: f64, v: f64, out: *mut f64| {
+            profsubd_evaluator_evaluate(ev, faces.as_ptr(), &u, &v, 1, out, null_mut(), null_mut())
+        };
+        assert_eq!(call(null(), &f, 0.5, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_NULL_ARGUMENT);
+        let garbage = [0u64; 4];
+        assert_eq!(
+            call(garbage.as_ptr().cast(), &f, 0.5, 0.5, p.as_mut_ptr()),
+            PROFSUBD_ERROR_INVALID_HANDLE
+        );
+        assert_eq!(call(ev, &[17], 0.5, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert!(last_error().contains("face 17 is out of range"), "{}", last_error());
+        assert_eq!(call(ev, &f, -0.1, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert!(last_error().contains("outside [0, 1]"));
+        assert_eq!(call(ev, &f, 0.5, f64::NAN, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert_eq!(call(ev, &[1], 0.5, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert!(last_error().contains("hole"));
+        assert_eq!(call(ev, &f, 0.5, 0.5, null_mut()), PROFSUBD_ERROR_NULL_ARGUMENT);
+        assert_eq!(p, [7.0; 3]);
+        let st = profsubd_evaluator_evaluate(
+            ev,
+            null(),
+            half.as_ptr(),
+            half.as_ptr(),
+            1,
+            p.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_ERROR_NULL_ARGUMENT);
+        // n = 0 with NULL arrays is a valid empty call.
+        let st = profsubd_evaluator_evaluate(
+            ev,
+            null(),
+            null(),
+            null(),
+            0,
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_OK);
+        let (mut a, mut b) = (0, 0);
+        assert_eq!(
+            profsubd_evaluator_face_to_parametric(ev, 9, &mut a, &mut b),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        let mut out = null_mut();
+        assert_eq!(
+            profsubd_evaluator_new(null(), null(), &mut out),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        let m = new_mesh_handle(mesh());
+        assert_eq!(profsubd_evaluator_new(m, null(), null_mut()), PROFSUBD_ERROR_NULL_ARGUMENT);
+        // A mesh handle is not an evaluator.
+        let mut n = 0;
+        assert_eq!(
+            profsubd_evaluator_num_parametric_faces(m.cast(), &mut n),
+            PROFSUBD_ERROR_INVALID_HANDLE
+        );
+        profsubd_mesh_free(m);
+        profsubd_evaluator_free(ev);
+        profsubd_evaluator_free(null_mut());
+    }
+}

@@ -138,6 +138,20 @@ typedef enum profsubd_triangle_rule {
 } profsubd_triangle_rule;
 
 /**
+ * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
+ * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
+ * with `profsubd_evaluator_free`.
+ *
+ * Points are `(face, u, v)` with OpenSubdiv's Ptex parameterization: on a mesh of quads,
+ * `face` is the face index and `(u, v)` in `[0, 1]²` has corner 0 at (0,0), corner 1 at
+ * (1,0), corner 2 at (1,1), corner 3 at (0,1). A face with N != 4 vertices is N consecutive
+ * parametric faces (sub-face k: (0,0) at vertex k, (1,0) at the middle of edge k -> k+1,
+ * (1,1) at the face centre, (0,1) at the middle of edge k-1 -> k), as `Far::PtexIndices`
+ * numbers them; `profsubd_evaluator_face_to_parametric` gives the numbers.
+ */
+typedef struct profsubd_evaluator profsubd_evaluator;
+
+/**
  * A validated control mesh (opaque, immutable, safe to share between threads). Create with
  * `profsubd_mesh_new` or `profsubd_mesh_read_obj`; release with `profsubd_mesh_free`.
  */
@@ -299,6 +313,68 @@ extern "C" {
  * stays valid until the next profsubd call on the same thread; copy it to keep it.
  */
 const char *profsubd_last_error_message(void);
+
+/**
+ * Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
+ * The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
+ * little more around extraordinary vertices and semi-sharp features.
+ */
+enum profsubd_status profsubd_evaluator_new(const struct profsubd_mesh *mesh,
+                                            const struct profsubd_options *options,
+                                            struct profsubd_evaluator **out);
+
+/**
+ * Release an evaluator (NULL is a no-op).
+ */
+void profsubd_evaluator_free(struct profsubd_evaluator *evaluator);
+
+/**
+ * Number of parametric (Ptex) faces: the valid range of `faces[i]` in
+ * `profsubd_evaluator_evaluate` (equal to the face count on a mesh of quads).
+ */
+enum profsubd_status profsubd_evaluator_num_parametric_faces(const struct profsubd_evaluator *evaluator,
+                                                             size_t *out);
+
+/**
+ * The parametric faces of control face `face`: `*first` and `*count` (1 for a quad, N for
+ * a face with N != 4 vertices, one per corner).
+ */
+enum profsubd_status profsubd_evaluator_face_to_parametric(const struct profsubd_evaluator *evaluator,
+                                                           uint32_t face,
+                                                           uint32_t *first,
+                                                           uint32_t *count);
+
+/**
+ * Evaluate `n` points `(faces[i], u[i], v[i])`: limit position into `positions` (3 doubles
+ * per point, x y z), and, when not NULL, the derivatives with respect to u into `du` and
+ * with respect to v into `dv` (3 doubles per point each). The unit normal is
+ * `normalize(du × dv)`.
+ *
+ * Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, message naming the point): a face out of range,
+ * u or v outside [0, 1] or NaN, a hole face, a face without limit surface (boundary
+ * interpolation "none"). Nothing is written on error.
+ */
+enum profsubd_status profsubd_evaluator_evaluate(const struct profsubd_evaluator *evaluator,
+                                                 const uint32_t *faces,
+                                                 const double *u,
+                                                 const double *v,
+                                                 size_t n,
+                                                 double *positions,
+                                                 double *du,
+                                                 double *dv);
+
+/**
+ * Exact limit position of every control vertex, in vertex order, into `positions` (3
+ * doubles per vertex), and when not NULL the derivatives into `du` and `dv` (3 doubles per
+ * vertex each, with respect to the (u, v) of the vertex's first face, as OpenSubdiv orders
+ * faces around a vertex). `capacity` and `*needed` count vertices (copy-out protocol).
+ */
+enum profsubd_status profsubd_evaluator_limit_vertices(const struct profsubd_evaluator *evaluator,
+                                                       double *positions,
+                                                       double *du,
+                                                       double *dv,
+                                                       size_t capacity,
+                                                       size_t *needed);
 
 /**
  * Build a mesh from caller arrays (copied); `*out` receives the new handle. Errors:

@@ -77,8 +77,7 @@ impl Evaluator {
             deep: Vec::new(),
         };
         ev.roots.reserve(ev.ptex.len());
-        for f in 0..mesh.num_faces() {
-            let size = mesh.face_sizes()[f];
+        for (f, &size) in mesh.face_sizes().iter().enumerate() {
             if no_surface[f] {
                 let count = if size == 4 { 1 } else { size };
                 for _ in 0..count {
@@ -100,7 +99,7 @@ impl Evaluator {
                 for k in 0..size {
                     let node = ev.build(refined.around_face(k), 1)?;
                     let n = ev.push_node(node);
-                ev.roots.push(n);
+                    ev.roots.push(n);
                 }
             }
         }
@@ -206,6 +205,14 @@ impl Evaluator {
         }
     }
 
+    /// Exact limit position and derivatives at every control vertex, in vertex order (see
+    /// [`super::vertex_limit`] for the derivatives' convention).
+    ///
+    /// Errors: as [`super::limit_vertex_samples`].
+    pub fn limit_vertices(&self) -> Result<Vec<LimitSample>> {
+        super::limit_vertex_samples(&self.mesh, &self.options)
+    }
+
     /// Evaluate many points; `faces`, `u` and `v` must have the same length. Stops at the
     /// first bad point, naming its index.
     pub fn evaluate_many(&self, faces: &[u32], u: &[f64], v: &[f64]) -> Result<Vec<LimitSample>> {
@@ -242,7 +249,9 @@ impl Evaluator {
                 });
             }
             if let Some(k) = corner_at(s, t) {
-                if let Some(sample) = super::patch_corner::corner_limit(nb, k, &self.options, scale)? {
+                if let Some(sample) =
+                    super::patch_corner::corner_limit(nb, k, &self.options, scale)?
+                {
                     return Ok(sample);
                 }
             }
@@ -265,7 +274,9 @@ impl Evaluator {
 /// `0..n` of the result (Far's child order).
 fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourhood> {
     let mesh = nb.to_mesh(options)?;
-    Ok(Neighbourhood::from_mesh(&refine_uniform(&mesh, options, 1)?))
+    Ok(Neighbourhood::from_mesh(&refine_uniform(
+        &mesh, options, 1,
+    )?))
 }
 
 /// The quadrant of `(s, t)` and the coordinates in it. Quadrant `q` is child `q` of a quad

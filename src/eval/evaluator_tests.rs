@@ -45,7 +45,13 @@ fn interior_face_of_a_grid_is_the_bicubic_b_spline() {
     let pts: [DVec3; 16] =
         std::array::from_fn(|k| parts.positions[(1 + k / 4) * (n + 1) + 1 + k % 4]);
     let patch = BicubicPatch::with_boundary(pts, 0);
-    for &(u, v) in &[(0.0, 0.0), (0.3, 0.8), (1.0, 0.5), (0.5, 1.0), (0.123, 0.987)] {
+    for &(u, v) in &[
+        (0.0, 0.0),
+        (0.3, 0.8),
+        (1.0, 0.5),
+        (0.5, 1.0),
+        (0.123, 0.987),
+    ] {
         let got = ev.evaluate((2 * n + 2) as u32, u, v).unwrap();
         let (p, du, dv) = patch.evaluate(u, v);
         assert!((got.position - p).length() < 1e-15, "{u} {v}");
@@ -226,12 +232,22 @@ fn check_against_refinement(parts: MeshParts, options: SubdivOptions, what: &str
         for ptex in 0..ev.num_parametric_faces() as u32 {
             let sub = ev.ptex_faces().locate(ptex).unwrap().1.is_some();
             let n = 1u32 << (level - u32::from(sub));
-            for (i, j) in [(1, 1), (n - 1, 1), (n / 2, n - 1), (1, (n / 2 + 1).min(n - 1)), (n - 1, n - 1)] {
+            for (i, j) in [
+                (1, 1),
+                (n - 1, 1),
+                (n / 2, n - 1),
+                (1, (n / 2 + 1).min(n - 1)),
+                (n - 1, n - 1),
+            ] {
                 let f = descendant(&mesh, ptex, i, j, level);
                 let w = refined.face(f as usize)[0];
                 let want = smooth_limit(&refined, w);
                 let got = ev
-                    .evaluate(ptex, f64::from(i) / f64::from(n), f64::from(j) / f64::from(n))
+                    .evaluate(
+                        ptex,
+                        f64::from(i) / f64::from(n),
+                        f64::from(j) / f64::from(n),
+                    )
                     .unwrap()
                     .position;
                 assert!(
@@ -277,7 +293,10 @@ fn open_meshes_agree_with_deep_refinement_under_each_boundary_rule() {
     let mut parts = mixed();
     parts.face_sizes.remove(0);
     parts.face_indices.drain(0..4);
-    for boundary in [BoundaryInterpolation::EdgeOnly, BoundaryInterpolation::EdgeAndCorner] {
+    for boundary in [
+        BoundaryInterpolation::EdgeOnly,
+        BoundaryInterpolation::EdgeAndCorner,
+    ] {
         let options = SubdivOptions {
             boundary,
             ..Default::default()
@@ -298,8 +317,16 @@ fn derivatives_near_extraordinary_vertices_match_finite_differences() {
             let fu = (p(u + h, v) - p(u - h, v)) / (2.0 * h);
             let fv = (p(u, v + h) - p(u, v - h)) / (2.0 * h);
             let tol = 1e-6 * (1.0 + s.du.length() + s.dv.length());
-            assert!((s.du - fu).length() < tol, "face {ptex} ({u}, {v}): {} vs {fu}", s.du);
-            assert!((s.dv - fv).length() < tol, "face {ptex} ({u}, {v}): {} vs {fv}", s.dv);
+            assert!(
+                (s.du - fu).length() < tol,
+                "face {ptex} ({u}, {v}): {} vs {fu}",
+                s.du
+            );
+            assert!(
+                (s.dv - fv).length() < tol,
+                "face {ptex} ({u}, {v}): {} vs {fv}",
+                s.dv
+            );
         }
     }
 }

@@ -155,14 +155,21 @@ fn corner_kind(nb: &Neighbourhood, f: u32, k: usize, options: &SubdivOptions) ->
     if nfaces == 1 && nedges == 2 && options.boundary == BoundaryInterpolation::EdgeAndCorner {
         vertex = SHARPNESS_INFINITE;
     }
-    if !manifold && !(nonmanifold_edges == 2 && boundary_edges == 0 && nfaces > nedges) {
+    // Far leaves the vertex of an interior non-manifold crease (two non-manifold edges, no
+    // boundary, more faces than edges) alone.
+    let on_nonmanifold_crease = nonmanifold_edges == 2 && boundary_edges == 0 && nfaces > nedges;
+    if !manifold && !on_nonmanifold_crease {
         vertex = SHARPNESS_INFINITE;
     }
     if vertex > 0.0 && !is_infinite(vertex) {
         return CornerKind::Irregular;
     }
-    let sharp_next = star.find(next).map(|e| is_infinite(edge_sharpness(nb, c, e)));
-    let sharp_prev = star.find(prev).map(|e| is_infinite(edge_sharpness(nb, c, e)));
+    let sharp_next = star
+        .find(next)
+        .map(|e| is_infinite(edge_sharpness(nb, c, e)));
+    let sharp_prev = star
+        .find(prev)
+        .map(|e| is_infinite(edge_sharpness(nb, c, e)));
     let (Some(sharp_next), Some(sharp_prev)) = (sharp_next, sharp_prev) else {
         return CornerKind::Irregular;
     };

@@ -98,13 +98,15 @@ impl Neighbourhood {
     /// Vertices of face `f`.
     #[inline]
     pub fn face(&self, f: u32) -> &[u32] {
-        &self.face_indices[self.face_offsets[f as usize] as usize..self.face_offsets[f as usize + 1] as usize]
+        &self.face_indices
+            [self.face_offsets[f as usize] as usize..self.face_offsets[f as usize + 1] as usize]
     }
 
     /// Faces incident to vertex `v` (a face repeating `v` appears once per occurrence).
     #[inline]
     pub fn vertex_faces(&self, v: u32) -> &[u32] {
-        &self.vf_faces[self.vf_offsets[v as usize] as usize..self.vf_offsets[v as usize + 1] as usize]
+        &self.vf_faces
+            [self.vf_offsets[v as usize] as usize..self.vf_offsets[v as usize + 1] as usize]
     }
 
     /// The crease tag of edge `(a, b)` (0 when untagged).
@@ -171,7 +173,13 @@ impl Neighbourhood {
                 }
             }
         }
-        Neighbourhood::assemble(positions, face_offsets, face_indices, edge_tags, vertex_tags)
+        Neighbourhood::assemble(
+            positions,
+            face_offsets,
+            face_indices,
+            edge_tags,
+            vertex_tags,
+        )
     }
 
     /// This fragment as a validated [`Mesh`] with `options` attached, to be refined.

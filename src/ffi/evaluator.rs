@@ -6,7 +6,7 @@ use crate::eval::{Evaluator, LimitSample};
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::mesh::{mesh_arg, profsubd_mesh};
-use crate::ffi::options::{resolve, profsubd_options};
+use crate::ffi::options::{profsubd_options, resolve};
 use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::{arg_out, arg_slice, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
@@ -156,6 +156,39 @@ pub unsafe extern "C" fn profsubd_evaluator_evaluate(
         write_points(du, &samples, |s| s.du);
         write_points(dv, &samples, |s| s.dv);
         Ok(())
+    })
+}
+
+/// Exact limit position of every control vertex, in vertex order, into `positions` (3
+/// doubles per vertex), and when not NULL the derivatives into `du` and `dv` (3 doubles per
+/// vertex each, with respect to the (u, v) of the vertex's first face, as OpenSubdiv orders
+/// faces around a vertex). `capacity` and `*needed` count vertices (copy-out protocol).
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_evaluator_limit_vertices(
+    evaluator: *const profsubd_evaluator,
+    positions: *mut f64,
+    du: *mut f64,
+    dv: *mut f64,
+    capacity: usize,
+    needed: *mut usize,
+) -> profsubd_status {
+    status_call(|| {
+        let ev = evaluator_arg(evaluator)?;
+        let c = CopyOut::new(capacity, needed)?;
+        let pos = c.buffer(positions, 3, "positions")?;
+        let du = optional_points(du, capacity, "du")?;
+        let dv = optional_points(dv, capacity, "dv")?;
+        let n = ev.mesh().num_vertices();
+        let samples = if n <= capacity {
+            ev.limit_vertices()?
+        } else {
+            Vec::new()
+        };
+        c.finish(n, "vertices", || {
+            write_points(Some(pos), &samples, |s| s.position);
+            write_points(du, &samples, |s| s.du);
+            write_points(dv, &samples, |s| s.dv);
+        })
     })
 }
 

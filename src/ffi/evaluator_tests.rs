@@ -5,6 +5,7 @@ use std::ptr::{null, null_mut};
 use glam::DVec3;
 
 use super::*;
+use crate::eval::limit_vertex_samples;
 use crate::ffi::error::last_error;
 use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh_free};
 use crate::ffi::status::profsubd_status::*;
@@ -21,8 +22,8 @@ fn mesh() -> Mesh {
         positions,
         face_sizes: vec![4, 4, 4, 4, 4, 3, 3, 3, 3],
         face_indices: vec![
-            0, 2, 3, 1, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5, 4, 5, 8, 5, 7, 8, 7, 6,
-            8, 6, 4, 8,
+            0, 2, 3, 1, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5, 4, 5, 8, 5, 7, 8, 7, 6, 8,
+            6, 4, 8,
         ],
         holes: vec![1],
         ..Default::default()
@@ -50,7 +51,10 @@ fn evaluate_returns_what_the_rust_api_returns() {
     let (mut p, mut du, mut dv) = ([0.0; 15], [0.0; 15], [0.0; 15]);
     unsafe {
         let mut n = 0;
-        assert_eq!(profsubd_evaluator_num_parametric_faces(ev, &mut n), PROFSUBD_OK);
+        assert_eq!(
+            profsubd_evaluator_num_parametric_faces(ev, &mut n),
+            PROFSUBD_OK
+        );
         assert_eq!(n, 5 + 4 * 3);
         let (mut first, mut count) = (0, 0);
         assert_eq!(
@@ -103,20 +107,42 @@ fn bad_input_gives_a_status_and_a_message_and_writes_nothing() {
         let call = |ev, faces: &[u32], u: f64, v: f64, out: *mut f64| {
             profsubd_evaluator_evaluate(ev, faces.as_ptr(), &u, &v, 1, out, null_mut(), null_mut())
         };
-        assert_eq!(call(null(), &f, 0.5, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_NULL_ARGUMENT);
+        assert_eq!(
+            call(null(), &f, 0.5, 0.5, p.as_mut_ptr()),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
         let garbage = [0u64; 4];
         assert_eq!(
             call(garbage.as_ptr().cast(), &f, 0.5, 0.5, p.as_mut_ptr()),
             PROFSUBD_ERROR_INVALID_HANDLE
         );
-        assert_eq!(call(ev, &[17], 0.5, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
-        assert!(last_error().contains("face 17 is out of range"), "{}", last_error());
-        assert_eq!(call(ev, &f, -0.1, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert_eq!(
+            call(ev, &[17], 0.5, 0.5, p.as_mut_ptr()),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(
+            last_error().contains("face 17 is out of range"),
+            "{}",
+            last_error()
+        );
+        assert_eq!(
+            call(ev, &f, -0.1, 0.5, p.as_mut_ptr()),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
         assert!(last_error().contains("outside [0, 1]"));
-        assert_eq!(call(ev, &f, 0.5, f64::NAN, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
-        assert_eq!(call(ev, &[1], 0.5, 0.5, p.as_mut_ptr()), PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert_eq!(
+            call(ev, &f, 0.5, f64::NAN, p.as_mut_ptr()),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            call(ev, &[1], 0.5, 0.5, p.as_mut_ptr()),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
         assert!(last_error().contains("hole"));
-        assert_eq!(call(ev, &f, 0.5, 0.5, null_mut()), PROFSUBD_ERROR_NULL_ARGUMENT);
+        assert_eq!(
+            call(ev, &f, 0.5, 0.5, null_mut()),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
         assert_eq!(p, [7.0; 3]);
         let st = profsubd_evaluator_evaluate(
             ev,
@@ -152,7 +178,10 @@ fn bad_input_gives_a_status_and_a_message_and_writes_nothing() {
             PROFSUBD_ERROR_NULL_ARGUMENT
         );
         let m = new_mesh_handle(mesh());
-        assert_eq!(profsubd_evaluator_new(m, null(), null_mut()), PROFSUBD_ERROR_NULL_ARGUMENT);
+        assert_eq!(
+            profsubd_evaluator_new(m, null(), null_mut()),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
         // A mesh handle is not an evaluator.
         let mut n = 0;
         assert_eq!(
@@ -163,4 +192,69 @@ fn bad_input_gives_a_status_and_a_message_and_writes_nothing() {
         profsubd_evaluator_free(ev);
         profsubd_evaluator_free(null_mut());
     }
+}
+
+#[test]
+fn limit_vertices_follow_the_copy_out_protocol() {
+    let ev = evaluator();
+    let want = limit_vertex_samples(&mesh(), &SubdivOptions::default()).unwrap();
+    let mut p = vec![0.0; 27];
+    let mut du = vec![0.0; 27];
+    let mut needed = 0;
+    unsafe {
+        let st = profsubd_evaluator_limit_vertices(
+            ev,
+            p.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            2,
+            &mut needed,
+        );
+        assert_eq!(st, PROFSUBD_ERROR_BUFFER_TOO_SMALL);
+        assert_eq!(needed, 9);
+        assert_eq!(p, vec![0.0; 27]);
+        let st = profsubd_evaluator_limit_vertices(
+            ev,
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            0,
+            &mut needed,
+        );
+        assert_eq!(st, PROFSUBD_ERROR_BUFFER_TOO_SMALL);
+        let st = profsubd_evaluator_limit_vertices(
+            ev,
+            p.as_mut_ptr(),
+            du.as_mut_ptr(),
+            null_mut(),
+            9,
+            &mut needed,
+        );
+        assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+        profsubd_evaluator_free(ev);
+    }
+    for (i, s) in want.iter().enumerate() {
+        assert_eq!(&p[3 * i..3 * i + 3], &s.position.to_array());
+        assert_eq!(&du[3 * i..3 * i + 3], &s.du.to_array());
+    }
+}
+
+#[test]
+fn corners_at_extraordinary_vertices_are_the_vertex_limits() {
+    let ev = Evaluator::new(&mesh(), &SubdivOptions::default()).unwrap();
+    let limits = ev.limit_vertices().unwrap();
+    // Face 0 = (0, 2, 3, 1): every corner is a valence-3 vertex.
+    for (k, (u, v)) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+        .into_iter()
+        .enumerate()
+    {
+        let s = ev.evaluate(0, u, v).unwrap();
+        let w = limits[[0, 2, 3, 1][k]];
+        assert!((s.position - w.position).length() < 1e-15, "corner {k}");
+        assert!(s.normal().dot(w.normal()) > 1.0 - 1e-12, "corner {k}");
+    }
+    // The apex of the triangle fan is vertex 2 of triangle 5 (Ptex faces 5..8): corner
+    // (0, 0) of its sub-face 2.
+    let apex = ev.evaluate(5 + 2, 0.0, 0.0).unwrap();
+    assert!((apex.position - limits[8].position).length() < 1e-15);
 }

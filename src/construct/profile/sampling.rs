@@ -1,0 +1,99 @@
+//! Ring placement: `along` ring intervals shared among the segments between breakpoints.
+//!
+//! Each segment `[T_j, T_{j+1}]` gets intervals in proportion to its length (largest
+//! deficit first), at least one, and a segment next to a smooth pole at least the number of
+//! rings its grid cap spans (`⌈around / 8⌉`). Inside a segment rings are uniform in `t`, so
+//! a ring passes through every breakpoint.
+
+use super::param::CommonParam;
+use super::silhouettes::{EndKind, Silhouettes};
+use crate::error::{Error, Result};
+
+/// The rings of a profile model.
+#[derive(Debug, Clone)]
+pub struct Rings {
+    /// Common parameter of each ring, bottom (0) to top (`along`).
+    pub t: Vec<f64>,
+    /// Ring index of each global breakpoint `T_j`.
+    pub ring_of_break: Vec<usize>,
+}
+
+impl Rings {
+    /// Place `along` ring intervals; `cap_rings` is the depth of a smooth pole's cap.
+    ///
+    /// Errors ([`Error::InvalidArgument`]): `along` too small for the segments and caps; the
+    /// curves crossing the axis at a ring.
+    pub fn new(
+        sil: &Silhouettes,
+        param: &CommonParam,
+        along: usize,
+        cap_rings: usize,
+    ) -> Result<Rings> {
+        let segs = param.segments();
+        let mut min = vec![1usize; segs];
+        if sil.ends[0] == EndKind::Smooth {
+            min[0] = min[0].max(cap_rings);
+        }
+        if sil.ends[1] == EndKind::Smooth {
+            min[segs - 1] = if segs == 1 && sil.ends[0] == EndKind::Smooth {
+                2 * cap_rings
+            } else {
+                min[segs - 1].max(cap_rings)
+            };
+        }
+        let need: usize = min.iter().sum();
+        if need > along {
+            return Err(Error::invalid_argument(format!(
+                "along = {along} is too small: the {segs} segment(s) between corners need one \
+                 ring interval each and each smooth pole's cap {cap_rings}; use along >= {need}"
+            )));
+        }
+        let mut count = min;
+        let ideal: Vec<f64> = (0..segs)
+            .map(|j| along as f64 * (param.t[j + 1] - param.t[j]))
+            .collect();
+        for _ in need..along {
+            let j = (0..segs)
+                .max_by(|&a, &b| {
+                    (ideal[a] - count[a] as f64).total_cmp(&(ideal[b] - count[b] as f64))
+                })
+                .unwrap_or(0);
+            count[j] += 1;
+        }
+        let mut t = Vec::with_capacity(along + 1);
+        let mut ring_of_break = Vec::with_capacity(segs + 1);
+        for (w, &c) in param.t.windows(2).zip(&count) {
+            ring_of_break.push(t.len());
+            for i in 0..c {
+                t.push(w[0] + (w[1] - w[0]) * i as f64 / c as f64);
+            }
+        }
+        ring_of_break.push(t.len());
+        t.push(1.0);
+        let tol = 1e-9 * sil.size;
+        for (r, &tr) in t.iter().enumerate() {
+            let c = param.points(sil, tr);
+            let (wx, wy) = (c[0].x - c[2].x, c[1].x - c[3].x);
+            if wx < -tol || wy < -tol {
+                return Err(Error::invalid_argument(format!(
+                    "the curves cross the axis at ring {r} (z ≈ {:.6}): c1 − c3 = {wx:.3e}, \
+                     c2 − c4 = {wy:.3e}; a profile must stay on its side of the axis (with a \
+                     spline, add points where it overshoots or use \"interpolation\": \
+                     \"polyline\")",
+                    (c[0].y + c[1].y + c[2].y + c[3].y) / 4.0
+                )));
+            }
+        }
+        Ok(Rings { t, ring_of_break })
+    }
+
+    /// Parameter at fractional ring depth `depth` from end `end` (0 bottom, 1 top), linear
+    /// between rings: where a grid cap's inner squares lie.
+    pub fn cap_t(&self, end: usize, depth: f64) -> f64 {
+        let last = self.t.len() - 1;
+        let x = if end == 0 { depth } else { last as f64 - depth };
+        let i = (x.floor() as usize).min(last.saturating_sub(1));
+        let f = x - i as f64;
+        self.t[i] + f * (self.t[i + 1] - self.t[i])
+    }
+}

@@ -1,0 +1,113 @@
+//! Corner detection on a point list, and one-sided tangent estimates.
+//!
+//! The tangent on each side of a point is estimated from the parabola (chord-length
+//! parameter) through the point and its two neighbours on that side, or from the chord when
+//! only one neighbour exists. A point is a corner when those two tangents differ by more than
+//! the sharp angle: for densely sampled smooth curves they agree to second order, while at a
+//! real kink they differ by the kink's angle.
+
+use glam::DVec2;
+
+/// Unit tangent leaving point `i` towards increasing index (`forward`) or arriving from
+/// decreasing index (`!forward`), both oriented along increasing index.
+pub fn one_sided_tangent(points: &[DVec2], i: usize, forward: bool) -> DVec2 {
+    one_sided_tangent_within(points, i, forward, &[])
+}
+
+/// [`one_sided_tangent`] that does not look across the `corners` (point indices): when the
+/// neighbour on that side is a corner, the chord to it is used.
+pub fn one_sided_tangent_within(
+    points: &[DVec2],
+    i: usize,
+    forward: bool,
+    corners: &[usize],
+) -> DVec2 {
+    let n = points.len();
+    let (a, b, c) = if forward {
+        if i + 1 >= n {
+            return one_sided_tangent_within(points, i, false, corners);
+        }
+        (
+            i,
+            i + 1,
+            (i + 2 < n && !corners.contains(&(i + 1))).then_some(i + 2),
+        )
+    } else {
+        if i == 0 {
+            return one_sided_tangent_within(points, i, true, corners);
+        }
+        (
+            i,
+            i - 1,
+            i.checked_sub(2).filter(|_| !corners.contains(&(i - 1))),
+        )
+    };
+    let sign = if forward { 1.0 } else { -1.0 };
+    let (p0, p1) = (points[a], points[b]);
+    let h1 = (p1 - p0).length();
+    let d = match c {
+        None => (p1 - p0) / h1,
+        Some(c) => {
+            // Parabola through p0 (param 0), p1 (h1), p2 (h1 + h2); derivative at 0.
+            let p2 = points[c];
+            let h2 = (p2 - p1).length();
+            let t2 = h1 + h2;
+            (p1 - p0) * (t2 / (h1 * h2)) - (p2 - p0) * (h1 / (t2 * h2))
+        }
+    };
+    (d * sign).normalize_or_zero()
+}
+
+/// Turning angle (radians, `0..=π`) at interior point `i`: the smallest angle between an
+/// arriving and a leaving tangent estimate, each either the chord or the parabola on that
+/// side. Taking the smallest keeps a point next to a corner (whose parabola spans the
+/// corner) from looking like a corner itself.
+pub fn turning_angle(points: &[DVec2], i: usize) -> f64 {
+    let chord = |j: usize| (points[j + 1] - points[j]).normalize_or_zero();
+    let arriving = [chord(i - 1), one_sided_tangent(points, i, false)];
+    let leaving = [chord(i), one_sided_tangent(points, i, true)];
+    arriving
+        .iter()
+        .flat_map(|a| {
+            leaving
+                .iter()
+                .map(move |b| a.dot(*b).clamp(-1.0, 1.0).acos())
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Interior points whose turning angle exceeds `sharp_angle` (radians), in increasing order.
+pub fn detect_corners(points: &[DVec2], sharp_angle: f64) -> Vec<usize> {
+    (1..points.len().saturating_sub(1))
+        .filter(|&i| turning_angle(points, i) > sharp_angle)
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_the_kink_of_a_double_cone_and_none_on_a_circle() {
+        let cone: Vec<DVec2> = (0..=8)
+            .map(|i| {
+                let z = i as f64 / 8.0 * 2.0 - 1.0;
+                DVec2::new(1.0 - z.abs(), z)
+            })
+            .collect();
+        assert_eq!(detect_corners(&cone, 30f64.to_radians()), vec![4]);
+        let angle = turning_angle(&cone, 4).to_degrees();
+        assert!((angle - 90.0).abs() < 1e-9, "{angle}");
+        let circle: Vec<DVec2> = (0..=16)
+            .map(|i| {
+                let a = std::f64::consts::PI * (i as f64 / 16.0 - 0.5);
+                DVec2::new(a.cos(), a.sin())
+            })
+            .collect();
+        assert!(detect_corners(&circle, 10f64.to_radians()).is_empty());
+        // The parabola estimate of a circle's end tangent is close to vertical... here the
+        // circle starts at the bottom pole, where the tangent is horizontal.
+        let t = one_sided_tangent(&circle, 0, true);
+        assert!(t.y.abs() < 0.01 && t.x > 0.99, "{t}");
+    }
+}

@@ -10,6 +10,7 @@
 
 pub mod check;
 pub mod convert;
+pub mod limit;
 pub mod refine;
 
 use std::ffi::OsString;
@@ -65,6 +66,15 @@ pub enum Command {
     /// the decayed crease and corner sharpness and the holes as tags, and the options used
     /// as tags. Positions equal OpenSubdiv's PrimvarRefiner in double precision.
     Refine(refine::RefineArgs),
+    /// Exact limit positions (and derivatives) at the control vertices or at (face, u, v).
+    ///
+    /// Without --at: one line `x y z` per control vertex, in vertex order. With --at
+    /// POINTS.txt (lines `face u v`): one line per point. --derivs appends `dux duy duz dvx
+    /// dvy dvz` (at a vertex: with respect to the (u, v) of its first face). Numbers as
+    /// %.17g, with the shortest digits that read back exactly. `face` is OpenSubdiv's Ptex
+    /// face (the face index on a mesh of quads; a face with N != 4 vertices counts as N
+    /// faces, one per corner: (0,0) at the corner, (1,1) at the face centre).
+    Limit(limit::LimitArgs),
 }
 
 /// Subdivision option flags. Given on the command line they override the tags of the mesh
@@ -170,6 +180,7 @@ pub fn dispatch(command: &Command) -> Result<i32> {
         Command::Check(args) => check::run(args),
         Command::Convert(args) => convert::run(args),
         Command::Refine(args) => refine::run(args),
+        Command::Limit(args) => limit::run(args),
     }
 }
 

@@ -1,0 +1,219 @@
+//! `profsubd limit MESH.obj [--at POINTS.txt] [--derivs]`: exact limit positions (and first
+//! derivatives) at the control vertices or at given `(face, u, v)` points.
+//!
+//! Output: one line per vertex (vertex order) or per point (file order): `x y z`, with
+//! `--derivs` followed by `dux duy duz dvx dvy dvz`. Numbers are printed as C's `%.17g`
+//! would choose between plain and exponent notation, but with the fewest digits that read
+//! back to the same double (so `0.1`, not `0.10000000000000001`).
+
+use std::fmt::Write as _;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+
+use super::{print_warnings, SubdivFlags};
+use crate::error::{Error, Result};
+use crate::eval::{limit_vertex_samples, Evaluator, LimitSample};
+use crate::io::obj::read_obj_file;
+
+/// Arguments of `limit`.
+#[derive(Debug, Args)]
+pub struct LimitArgs {
+    /// The OBJ mesh.
+    #[arg(value_name = "MESH.obj")]
+    pub input: PathBuf,
+    /// Evaluate at the points of this file, one `face u v` per line (`#` comments and blank
+    /// lines allowed). `face` is OpenSubdiv's Ptex face: the face index on a mesh of quads;
+    /// a face with N != 4 vertices counts as N faces, one per corner. `u` and `v` in [0, 1].
+    #[arg(long, value_name = "POINTS.txt")]
+    pub at: Option<PathBuf>,
+    /// Append the derivatives with respect to u and v (`dux duy duz dvx dvy dvz`).
+    #[arg(long)]
+    pub derivs: bool,
+    /// Subdivision options.
+    #[command(flatten)]
+    pub options: SubdivFlags,
+}
+
+/// Run `limit`; returns exit code 0 on success.
+pub fn run(args: &LimitArgs) -> Result<i32> {
+    let read = read_obj_file(&args.input)?;
+    print_warnings(&read.warnings);
+    let options = args.options.partial().over(read.mesh.options()).resolve();
+    let samples = match &args.at {
+        None => limit_vertex_samples(&read.mesh, &options)?,
+        Some(path) => {
+            let points = read_points(path)?;
+            let ev = Evaluator::new(&read.mesh, &options)?;
+            let mut out = Vec::with_capacity(points.len());
+            for p in &points {
+                out.push(ev.evaluate(p.face, p.u, p.v).map_err(|e| Error::Parse {
+                    path: path.clone(),
+                    line: p.line,
+                    message: e.to_string(),
+                })?);
+            }
+            out
+        }
+    };
+    let text = format_samples(&samples, args.derivs);
+    std::io::stdout()
+        .lock()
+        .write_all(text.as_bytes())
+        .map_err(|e| Error::Io {
+            path: PathBuf::from("<stdout>"),
+            message: e.to_string(),
+        })?;
+    Ok(0)
+}
+
+/// One `face u v` line of a points file.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PointLine {
+    /// 1-based line number, for messages.
+    pub line: usize,
+    /// Ptex face.
+    pub face: u32,
+    /// Parameter u.
+    pub u: f64,
+    /// Parameter v.
+    pub v: f64,
+}
+
+/// Read a points file (see [`LimitArgs::at`]).
+pub fn read_points(path: &Path) -> Result<Vec<PointLine>> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::Io {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    parse_points(&text, path)
+}
+
+/// Parse the text of a points file; `path` is only used in messages.
+pub fn parse_points(text: &str, path: &Path) -> Result<Vec<PointLine>> {
+    let mut out = Vec::new();
+    for (i, raw) in text.lines().enumerate() {
+        let line = raw.split('#').next().unwrap_or("").trim();
+        if line.is_empty() {
+            continue;
+        }
+        let err = |message: String| Error::Parse {
+            path: path.to_path_buf(),
+            line: i + 1,
+            message,
+        };
+        let fields: Vec<&str> = line.split_whitespace().collect();
+        if fields.len() != 3 {
+            return Err(err(format!(
+                "expected `face u v`, found {} fields: `{line}`",
+                fields.len()
+            )));
+        }
+        let face = fields[0].parse::<u32>().map_err(|_| {
+            err(format!(
+                "face must be an integer >= 0, found `{}`",
+                fields[0]
+            ))
+        })?;
+        let number = |s: &str, name: &str| {
+            s.parse::<f64>()
+                .map_err(|_| err(format!("{name} must be a number, found `{s}`")))
+        };
+        out.push(PointLine {
+            line: i + 1,
+            face,
+            u: number(fields[1], "u")?,
+            v: number(fields[2], "v")?,
+        });
+    }
+    Ok(out)
+}
+
+/// The output lines for `samples`.
+pub fn format_samples(samples: &[LimitSample], derivs: bool) -> String {
+    let mut out = String::with_capacity(samples.len() * if derivs { 180 } else { 60 });
+    for s in samples {
+        let p = s.position;
+        let _ = write!(out, "{} {} {}", G17(p.x), G17(p.y), G17(p.z));
+        if derivs {
+            for d in [s.du, s.dv] {
+                let _ = write!(out, " {} {} {}", G17(d.x), G17(d.y), G17(d.z));
+            }
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// `%.17g` notation with shortest round-trip digits: exponent form when the decimal
+/// exponent is below -4 or at least 17, plain decimal otherwise.
+struct G17(f64);
+
+impl std::fmt::Display for G17 {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if x == 0.0 || !x.is_finite() {
+            return write!(f, "{x}");
+        }
+        let sci = format!("{x:e}");
+        let exponent: i32 = sci
+            .rsplit('e')
+            .next()
+            .and_then(|e| e.parse().ok())
+            .unwrap_or(0);
+        if (-4..17).contains(&exponent) {
+            write!(f, "{x}")
+        } else {
+            f.write_str(&sci)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_shortest_round_trip_in_g_notation() {
+        let s = |x: f64| G17(x).to_string();
+        assert_eq!(s(0.1), "0.1");
+        assert_eq!(s(1.0), "1");
+        assert_eq!(s(-0.0), "-0");
+        assert_eq!(s(1e-4), "0.0001");
+        assert_eq!(s(1.5e-5), "1.5e-5");
+        assert_eq!(s(12345678901234567.0), "12345678901234568");
+        assert_eq!(s(1.2e17), "1.2e17");
+        for x in [
+            std::f64::consts::PI,
+            1.0 / 3.0,
+            -2.5e-300,
+            6.02e23,
+            0.30000000000000004,
+        ] {
+            assert_eq!(s(x).parse::<f64>().unwrap(), x);
+        }
+    }
+
+    #[test]
+    fn points_files_are_parsed_with_line_numbers_in_errors() {
+        let p = Path::new("pts.txt");
+        let pts = parse_points("# header\n0 0.5 0.25\n\n3 1 0 # corner\n", p).unwrap();
+        assert_eq!(pts.len(), 2);
+        assert_eq!(
+            pts[1],
+            PointLine {
+                line: 4,
+                face: 3,
+                u: 1.0,
+                v: 0.0
+            }
+        );
+        let e = parse_points("0 0.5\n", p).unwrap_err().to_string();
+        assert_eq!(e, "pts.txt:1: expected `face u v`, found 2 fields: `0 0.5`");
+        let e = parse_points("\n-1 0 0\n", p).unwrap_err().to_string();
+        assert!(e.starts_with("pts.txt:2: face must be an integer"), "{e}");
+        let e = parse_points("1 x 0\n", p).unwrap_err().to_string();
+        assert!(e.contains("u must be a number, found `x`"), "{e}");
+    }
+}

@@ -96,6 +96,44 @@ ctest_valgrind() {
     ctest --test-dir "$BUILD_DIR" -L valgrind --output-on-failure -j "$JOBS"
 }
 
+PREFIX_ROOT="$(mktemp -d)"
+PREFIX="$PREFIX_ROOT/prefix"
+trap 'rm -rf "$PREFIX_ROOT"' EXIT
+
+# Install into a temporary prefix and check what landed there.
+install_package() {
+    cmake --install "$BUILD_DIR" --prefix "$PREFIX"
+    local libdir
+    libdir="$(dirname "$(find "$PREFIX" -name profsubd.pc)")/.."
+    for f in "$PREFIX/include/profsubd.h" "$libdir/libprofsubd.so" "$libdir/libprofsubd.so.0" \
+        "$libdir/libprofsubd.a" "$libdir/cmake/profsubd/profsubdConfig.cmake" \
+        "$libdir/cmake/profsubd/profsubdConfigVersion.cmake"; do
+        [ -e "$f" ] || { echo "missing after install: $f" >&2; return 1; }
+    done
+    [ -L "$libdir/libprofsubd.so" ] && [ -L "$libdir/libprofsubd.so.0" ]
+    readelf -d "$libdir/libprofsubd.so.0" | grep -q 'SONAME.*\[libprofsubd\.so\.0\]'
+    echo "installed into $PREFIX; SONAME: $(readelf -d "$libdir/libprofsubd.so.0" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')"
+}
+
+example_find_package() {
+    local dir="$PREFIX_ROOT/example-find-package"
+    cmake -S examples/c -B "$dir" -DCMAKE_PREFIX_PATH="$PREFIX" -DCMAKE_BUILD_TYPE=Release
+    cmake --build "$dir" -j "$JOBS"
+    "$dir/cube_example" "$dir/cube.obj"
+    "$dir/cube_example_static" "$dir/cube_static.obj"
+    # The program records the versioned SONAME, not the bare .so name.
+    readelf -d "$dir/cube_example" | grep -q 'NEEDED.*\[libprofsubd\.so\.0\]'
+}
+
+example_pkg_config() {
+    local dir="$PREFIX_ROOT/example-pkg-config" pcdir
+    mkdir -p "$dir"
+    pcdir="$(dirname "$(find "$PREFIX" -name profsubd.pc)")"
+    echo "pkg-config --cflags --libs profsubd: $(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags --libs profsubd)"
+    PKG_CONFIG_PATH="$pcdir" make -C examples/c OUT="$dir"
+    "$dir/cube_example" "$dir/cube.obj"
+}
+
 if [ -z "${PROFSUBD_OSD_SHAPES:-}" ] && [ ! -d "$ROOT/../shared/conformance/osd_shapes" ]; then
     echo "NOTE: OpenSubdiv shapes not found at $ROOT/../shared/conformance/osd_shapes;"
     echo "      the conformance tests will run on project-generated meshes only."
@@ -109,6 +147,9 @@ step "cargo test --release" rust_test
 step "cmake configure + build ($BUILD_DIR)" cmake_build
 step "ctest (C++ harness vs OpenSubdiv and OpenMesh)" ctest_all
 step "valgrind --error-exitcode=1 over the C API harness" ctest_valgrind
+step "cmake --install into a temporary prefix" install_package
+step "C example via find_package(profsubd) (installed package)" example_find_package
+step "C example via pkg-config (installed package)" example_pkg_config
 
 section "summary"
 echo "total time: $((SECONDS - START)) s"

@@ -73,14 +73,16 @@ void compare_with_far(Checker &ck, const OsdShape &s, const CapiMesh &c) {
     ck.equal(c.report.num_edges, c.num_edges, "report edge count");
     ck.equal(c.report.num_faces, c.num_faces, "report face count");
 
-    int edge_mismatch = -1, boundary = 0, non_manifold_edges = 0;
+    // Edge instances are Far's; the report counts vertex pairs (a pair a face uses twice and
+    // a degenerate pair (v,v) are an edge per use in Far, one pair in the report).
+    int edge_mismatch = -1;
+    std::map<std::pair<int, int>, size_t> uses_of_pair;
     for (int e = 0; e < l.GetNumEdges(); ++e) {
         auto ev = l.GetEdgeVertices(e);
         if (edge_mismatch < 0 && (c.edges[2 * e] != uint32_t(ev[0]) || c.edges[2 * e + 1] != uint32_t(ev[1]))) {
             edge_mismatch = e;
         }
-        boundary += l.GetEdgeFaces(e).size() == 1;
-        non_manifold_edges += l.IsEdgeNonManifold(e);
+        uses_of_pair[std::minmax(ev[0], ev[1])] += l.GetEdgeFaces(e).size();
     }
     if (edge_mismatch >= 0) {
         auto ev = l.GetEdgeVertices(edge_mismatch);
@@ -91,15 +93,21 @@ void compare_with_far(Checker &ck, const OsdShape &s, const CapiMesh &c) {
     } else {
         ck.check(true, "edge vertices in Far's edge order");
     }
-    ck.equal(c.report.num_boundary_edges, size_t(boundary), "boundary edges vs Far");
-    ck.equal(c.report.num_non_manifold_edges, size_t(non_manifold_edges), "non-manifold edges vs Far");
+    size_t boundary_pairs = 0, non_manifold_pairs = 0;
+    for (const auto &kv : uses_of_pair) {
+        boundary_pairs += kv.second == 1;
+        non_manifold_pairs += kv.second > 2;
+    }
+    ck.equal(c.report.num_boundary_edges, boundary_pairs, "boundary edges (vertex pairs with one face) vs Far");
+    ck.equal(c.report.num_non_manifold_edges, non_manifold_pairs, "non-manifold edges (pairs with > 2 faces) vs Far");
 
-    int valence_mismatch = -1, non_manifold_vertices = 0;
+    int valence_mismatch = -1, non_manifold_vertices = 0, isolated = 0;
     for (int v = 0; v < l.GetNumVertices(); ++v) {
         if (valence_mismatch < 0 && c.valences[v] != uint32_t(l.GetVertexEdges(v).size())) {
             valence_mismatch = v;
         }
         non_manifold_vertices += l.IsVertexNonManifold(v);
+        isolated += l.GetVertexFaces(v).size() == 0;
     }
     if (valence_mismatch >= 0) {
         ck.check(false, "valence of vertex " + std::to_string(valence_mismatch) + " is " +
@@ -109,6 +117,15 @@ void compare_with_far(Checker &ck, const OsdShape &s, const CapiMesh &c) {
         ck.check(true, "valence of every vertex");
     }
     ck.equal(c.report.num_non_manifold_vertices, size_t(non_manifold_vertices), "non-manifold vertices vs Far");
+    ck.equal(c.report.num_isolated_vertices, size_t(isolated), "isolated vertices vs Far");
+    size_t repeating = 0;
+    for (int f = 0; f < l.GetNumFaces(); ++f) {
+        auto fv = l.GetFaceVertices(f);
+        std::vector<int> sorted(fv.begin(), fv.end());
+        std::sort(sorted.begin(), sorted.end());
+        repeating += std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+    }
+    ck.equal(c.report.num_faces_with_repeated_vertices, repeating, "faces repeating a vertex vs Far");
     ck.equal(c.report.euler_characteristic,
              int64_t(l.GetNumVertices()) - l.GetNumEdges() + l.GetNumFaces(), "Euler characteristic V-E+F");
 
@@ -205,6 +222,46 @@ void compare_with_openmesh(Checker &ck, const CapiMesh &c) {
         boundary += om.is_boundary(e);
     }
     ck.equal(boundary, c.report.num_boundary_edges, "OpenMesh boundary edges");
+    // OpenMesh only accepts consistently oriented faces, so the report must agree.
+    ck.equal(c.report.is_consistently_oriented, int32_t(1), "consistently oriented (OpenMesh took every face)");
+    ck.equal(c.report.num_inconsistent_edges, size_t(0), "no inconsistent edges");
+    // Boundary loops: follow next_halfedge around each boundary.
+    size_t loops = 0;
+    std::vector<bool> seen(om.n_halfedges(), false);
+    for (auto h : om.halfedges()) {
+        if (!om.is_boundary(h) || seen[h.idx()]) {
+            continue;
+        }
+        ++loops;
+        for (auto g = h; !seen[g.idx()]; g = om.next_halfedge_handle(g)) {
+            seen[g.idx()] = true;
+        }
+    }
+    ck.equal(c.report.num_boundary_loops, loops, "OpenMesh boundary loops");
+    // Components: faces joined through shared vertices.
+    std::vector<int> component(om.n_faces(), -1);
+    size_t components = 0;
+    for (auto f : om.faces()) {
+        if (component[f.idx()] >= 0) {
+            continue;
+        }
+        std::vector<PolyMesh::FaceHandle> stack{f};
+        component[f.idx()] = int(components);
+        while (!stack.empty()) {
+            auto g = stack.back();
+            stack.pop_back();
+            for (auto v : om.fv_range(g)) {
+                for (auto n : om.vf_range(v)) {
+                    if (component[n.idx()] < 0) {
+                        component[n.idx()] = int(components);
+                        stack.push_back(n);
+                    }
+                }
+            }
+        }
+        ++components;
+    }
+    ck.equal(c.report.num_components, components, "OpenMesh components");
     int valence_mismatch = -1;
     for (size_t v = 0; v < c.num_vertices && valence_mismatch < 0; ++v) {
         if (om.valence(vh[v]) != c.valences[v]) {

@@ -537,6 +537,31 @@ enum profsubd_status profsubd_mesh_get_valences(const struct profsubd_mesh *mesh
                                                 size_t *needed);
 
 /**
+ * Copy the sharpness OpenSubdiv's Far gives each edge before refinement
+ * (`Far::TopologyLevel::GetEdgeSharpness` of level 0), in `profsubd_mesh_get_edges` order:
+ * the crease tags, with boundary and non-manifold edges infinitely sharp (10). `options`
+ * may be NULL (the mesh's tags and the defaults apply). `capacity` and `*needed` count edges.
+ */
+enum profsubd_status profsubd_mesh_get_edge_sharpness(const struct profsubd_mesh *mesh,
+                                                      const struct profsubd_options *options,
+                                                      float *out,
+                                                      size_t capacity,
+                                                      size_t *needed);
+
+/**
+ * Copy the sharpness Far gives each vertex before refinement
+ * (`Far::TopologyLevel::GetVertexSharpness` of level 0): the corner tags, with the corners
+ * of the boundary (one face, two edges) infinitely sharp under
+ * `PROFSUBD_BOUNDARY_EDGE_AND_CORNER` and non-manifold vertices sharpened as Far does.
+ * `options` may be NULL. `capacity` and `*needed` count vertices.
+ */
+enum profsubd_status profsubd_mesh_get_vertex_sharpness(const struct profsubd_mesh *mesh,
+                                                        const struct profsubd_options *options,
+                                                        float *out,
+                                                        size_t capacity,
+                                                        size_t *needed);
+
+/**
  * Examine the mesh and fill `*out`. The caller sets `out->struct_size =
  * sizeof(profsubd_mesh_report)` first (a smaller value gives
  * `PROFSUBD_ERROR_INVALID_ARGUMENT`); a larger struct from a newer header is filled up to

@@ -1,15 +1,18 @@
 //! Topology queries on a mesh handle: OpenSubdiv's edges, vertex valences and the
 //! validation report.
 
+use std::borrow::Cow;
 use std::mem::size_of;
 
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle;
-use crate::ffi::mesh::{count_query, profsubd_mesh};
+use crate::ffi::mesh::{count_query, profsubd_mesh, MeshData};
+use crate::ffi::options::{profsubd_options, resolve};
 use crate::ffi::panic::status_call;
 use crate::ffi::ptr::{arg_ref, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
 use crate::mesh::validate::MeshReport;
+use crate::topology::Level;
 
 /// Number of edges, as OpenSubdiv's level 0 counts them (a vertex pair used twice by one
 /// face, or a degenerate pair, counts once per use).
@@ -60,6 +63,84 @@ pub unsafe extern "C" fn profsubd_mesh_get_valences(
             fill(buf, (0..nv).map(|v| level.valence(v) as u32))
         })
     })
+}
+
+/// The base level under `options` (NULL: the mesh's tags and the defaults): the cached one
+/// when the options resolve to the mesh's own.
+unsafe fn level_for<'a>(
+    m: &'a MeshData,
+    options: *const profsubd_options,
+) -> FfiResult<Cow<'a, Level>> {
+    let opts = resolve(options, m.mesh())?;
+    Ok(if opts == m.mesh().options().resolve() {
+        Cow::Borrowed(m.level())
+    } else {
+        Cow::Owned(Level::from_mesh_with_options(m.mesh(), &opts))
+    })
+}
+
+/// A copy-out query of one `f32` per component of the base level.
+unsafe fn copy_level_floats(
+    mesh: *const profsubd_mesh,
+    options: *const profsubd_options,
+    (out, capacity, needed): (*mut f32, usize, *mut usize),
+    unit: &str,
+    count: fn(&Level) -> usize,
+    value: fn(&Level, usize) -> f32,
+) -> profsubd_status {
+    status_call(|| {
+        let m = handle::borrow(mesh, "mesh")?;
+        let c = CopyOut::new(capacity, needed)?;
+        let buf = c.buffer(out, 1, "out")?;
+        let level = level_for(m, options)?;
+        let n = count(&level);
+        c.finish(n, unit, || fill(buf, (0..n).map(|i| value(&level, i))))
+    })
+}
+
+/// Copy the sharpness OpenSubdiv's Far gives each edge before refinement
+/// (`Far::TopologyLevel::GetEdgeSharpness` of level 0), in `profsubd_mesh_get_edges` order:
+/// the crease tags, with boundary and non-manifold edges infinitely sharp (10). `options`
+/// may be NULL (the mesh's tags and the defaults apply). `capacity` and `*needed` count edges.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_mesh_get_edge_sharpness(
+    mesh: *const profsubd_mesh,
+    options: *const profsubd_options,
+    out: *mut f32,
+    capacity: usize,
+    needed: *mut usize,
+) -> profsubd_status {
+    copy_level_floats(
+        mesh,
+        options,
+        (out, capacity, needed),
+        "edges",
+        Level::num_edges,
+        Level::edge_sharpness,
+    )
+}
+
+/// Copy the sharpness Far gives each vertex before refinement
+/// (`Far::TopologyLevel::GetVertexSharpness` of level 0): the corner tags, with the corners
+/// of the boundary (one face, two edges) infinitely sharp under
+/// `PROFSUBD_BOUNDARY_EDGE_AND_CORNER` and non-manifold vertices sharpened as Far does.
+/// `options` may be NULL. `capacity` and `*needed` count vertices.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_mesh_get_vertex_sharpness(
+    mesh: *const profsubd_mesh,
+    options: *const profsubd_options,
+    out: *mut f32,
+    capacity: usize,
+    needed: *mut usize,
+) -> profsubd_status {
+    copy_level_floats(
+        mesh,
+        options,
+        (out, capacity, needed),
+        "vertices",
+        Level::num_vertices,
+        Level::vertex_sharpness,
+    )
 }
 
 /// What a CAD user must know about a mesh before relying on it (see `profsubd_mesh_check`).
@@ -239,6 +320,74 @@ mod tests {
     }
 
     #[test]
+    fn sharpness_is_what_far_assigns_under_the_options() {
+        let mut parts = Mesh::from_parts(MeshParts {
+            positions: (0..9)
+                .map(|i| DVec3::new((i % 3) as f64, (i / 3) as f64, 0.0))
+                .collect(),
+            face_sizes: vec![4; 4],
+            face_indices: vec![0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7],
+            ..Default::default()
+        })
+        .unwrap()
+        .into_parts();
+        parts.creases.push(crate::mesh::Crease {
+            vertices: [4, 1],
+            sharpness: 2.5,
+        });
+        parts.corners.push(crate::mesh::Corner {
+            vertex: 4,
+            sharpness: 1.25,
+        });
+        let m = new_mesh_handle(Mesh::from_parts(parts).unwrap());
+        let mut o = null_mut();
+        let (mut edges, mut verts, mut n) = ([0f32; 12], [0f32; 9], 0);
+        unsafe {
+            assert_eq!(
+                profsubd_mesh_get_edge_sharpness(m, null(), edges.as_mut_ptr(), 12, &mut n),
+                PROFSUBD_OK
+            );
+            // Edge order as in the test above: 1-4 is edge 1; 4-5 (6), 4-7 (7), 3-4 (2) are
+            // interior; the rest are boundary.
+            let inf = 10.0;
+            let expected = [inf, 2.5, 0.0, inf, inf, inf, 0.0, 0.0, inf, inf, inf, inf];
+            assert_eq!((edges, n), (expected, 12));
+            assert_eq!(
+                profsubd_mesh_get_vertex_sharpness(m, null(), verts.as_mut_ptr(), 9, &mut n),
+                PROFSUBD_OK
+            );
+            assert_eq!(verts, [inf, 0.0, inf, 0.0, 1.25, 0.0, inf, 0.0, inf]);
+            // Edge-only boundaries: the four corners are no longer sharpened.
+            crate::ffi::options::profsubd_options_new(&mut o);
+            crate::ffi::options::profsubd_options_set_boundary(o, 1);
+            assert_eq!(
+                profsubd_mesh_get_vertex_sharpness(m, o, verts.as_mut_ptr(), 9, &mut n),
+                PROFSUBD_OK
+            );
+            assert_eq!(verts, [0.0, 0.0, 0.0, 0.0, 1.25, 0.0, 0.0, 0.0, 0.0]);
+            let mut small = [7f32; 8];
+            assert_eq!(
+                profsubd_mesh_get_vertex_sharpness(m, o, small.as_mut_ptr(), 8, &mut n),
+                PROFSUBD_ERROR_BUFFER_TOO_SMALL
+            );
+            assert_eq!((small, n), ([7.0; 8], 9));
+            // Bad options handle, NULL buffer.
+            let fake = [0u64; 4];
+            let f = fake.as_ptr().cast::<profsubd_options>();
+            assert_eq!(
+                profsubd_mesh_get_edge_sharpness(m, f, edges.as_mut_ptr(), 12, &mut n),
+                PROFSUBD_ERROR_INVALID_HANDLE
+            );
+            assert_eq!(
+                profsubd_mesh_get_vertex_sharpness(m, null(), null_mut(), 9, &mut n),
+                PROFSUBD_ERROR_NULL_ARGUMENT
+            );
+            crate::ffi::options::profsubd_options_free(o);
+            profsubd_mesh_free(m);
+        }
+    }
+
+    #[test]
     fn report_counts_boundary_and_orientation() {
         let m = grid(false);
         let mut r = profsubd_mesh_report {
@@ -320,6 +469,7 @@ mod tests {
         let f = fake.as_mut_ptr().cast::<profsubd_mesh>();
         let mut n = 0;
         let mut buf = [0u32; 24];
+        let mut fbuf = [0f32; 12];
         let mut r = profsubd_mesh_report {
             struct_size: size_of::<profsubd_mesh_report>(),
             ..Default::default()
@@ -339,6 +489,15 @@ mod tests {
                     status
                 );
                 assert_eq!(profsubd_mesh_check(h, &mut r), status);
+                let fs = fbuf.as_mut_ptr();
+                assert_eq!(
+                    profsubd_mesh_get_edge_sharpness(h, null(), fs, 12, &mut n),
+                    status
+                );
+                assert_eq!(
+                    profsubd_mesh_get_vertex_sharpness(h, null(), fs, 9, &mut n),
+                    status
+                );
             }
             assert_eq!(
                 profsubd_mesh_num_edges(m, null_mut()),

@@ -374,6 +374,26 @@ fn main() {
             "get_valences",
         );
         assert_eq!(valences, [2, 3, 2, 2, 3, 2]);
+        let mut edge_sharpness = [0f32; 7];
+        check(
+            profsubd_mesh_get_edge_sharpness(mesh, null(), edge_sharpness.as_mut_ptr(), 7, &mut n),
+            PROFSUBD_OK,
+            "get_edge_sharpness",
+        );
+        assert_eq!(edge_sharpness, [10.0, 1.5, 10.0, 10.0, 10.0, 10.0, 10.0]);
+        let mut vertex_sharpness = [0f32; 6];
+        check(
+            profsubd_mesh_get_vertex_sharpness(
+                mesh,
+                null(),
+                vertex_sharpness.as_mut_ptr(),
+                6,
+                &mut n,
+            ),
+            PROFSUBD_OK,
+            "get_vertex_sharpness",
+        );
+        assert_eq!(vertex_sharpness, [10.0, 0.0, 10.0, 10.0, 0.0, 10.0]);
         let mut report: profsubd_mesh_report = std::mem::zeroed();
         report.struct_size = std::mem::size_of::<profsubd_mesh_report>();
         check(profsubd_mesh_check(mesh, &mut report), PROFSUBD_OK, "check");
@@ -398,7 +418,7 @@ fn main() {
             PROFSUBD_ERROR_INVALID_ARGUMENT,
             "size",
         );
-        checks += 4;
+        checks += 6;
 
         // OBJ: write, read back, same data; the bundled example; a missing file.
         let path = CString::new(work.join("strip.obj").to_str().unwrap()).unwrap();

@@ -138,6 +138,25 @@ typedef enum profsubd_triangle_rule {
 } profsubd_triangle_rule;
 
 /**
+ * Values for the `quantity` of `profsubd_limit_stencils_new` (passed as `int32_t`).
+ */
+typedef enum profsubd_limit_quantity {
+    /**
+     * Limit position.
+     */
+    PROFSUBD_LIMIT_POSITION = 0,
+    /**
+     * Derivative with respect to u at the corner of the vertex's first face (OpenSubdiv's
+     * first face around the vertex that is not a hole).
+     */
+    PROFSUBD_LIMIT_DU = 1,
+    /**
+     * Derivative with respect to v at that corner.
+     */
+    PROFSUBD_LIMIT_DV = 2,
+} profsubd_limit_quantity;
+
+/**
  * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
  * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
@@ -163,6 +182,14 @@ typedef struct profsubd_mesh profsubd_mesh;
  * meaning "nothing set": the mesh's tags and the defaults apply.
  */
 typedef struct profsubd_options profsubd_options;
+
+/**
+ * A table of stencils (opaque, immutable, safe to share between threads): row `i` is a
+ * weighted sum of control vertices. Create with `profsubd_limit_stencils_new`, release with
+ * `profsubd_stencil_table_free`. Stored in compressed sparse rows: row `i` has the entries
+ * `offsets[i] .. offsets[i + 1] - 1` of `indices` (control vertices) and `weights`.
+ */
+typedef struct profsubd_stencil_table profsubd_stencil_table;
 
 /**
  * Caller arrays describing a mesh, as OpenSubdiv's `Far::TopologyDescriptor`. All counts
@@ -375,6 +402,75 @@ enum profsubd_status profsubd_evaluator_limit_vertices(const struct profsubd_eva
                                                        double *dv,
                                                        size_t capacity,
                                                        size_t *needed);
+
+/**
+ * Build the limit stencils of every control vertex of `mesh` under `options` (NULL: the
+ * mesh's tags, then the defaults), one row per vertex in vertex order. `quantity` is
+ * `PROFSUBD_LIMIT_POSITION` (the exact limit position, also at darts and semi-sharp
+ * features), `PROFSUBD_LIMIT_DU` or `PROFSUBD_LIMIT_DV`. An isolated vertex's row is the
+ * vertex itself (position) or empty (derivatives).
+ */
+enum profsubd_status profsubd_limit_stencils_new(const struct profsubd_mesh *mesh,
+                                                 const struct profsubd_options *options,
+                                                 int32_t quantity,
+                                                 struct profsubd_stencil_table **out);
+
+/**
+ * Release a stencil table (NULL is a no-op).
+ */
+void profsubd_stencil_table_free(struct profsubd_stencil_table *table);
+
+/**
+ * Number of rows (stencils) of the table.
+ */
+enum profsubd_status profsubd_stencil_table_num_rows(const struct profsubd_stencil_table *table,
+                                                     size_t *out);
+
+/**
+ * Total number of (index, weight) entries of the table.
+ */
+enum profsubd_status profsubd_stencil_table_num_entries(const struct profsubd_stencil_table *table,
+                                                        size_t *out);
+
+/**
+ * Copy the row offsets (rows + 1 values, the last one the entry count) into `out`.
+ * `capacity` and `*needed` count offsets (copy-out protocol).
+ */
+enum profsubd_status profsubd_stencil_table_get_offsets(const struct profsubd_stencil_table *table,
+                                                        uint32_t *out,
+                                                        size_t capacity,
+                                                        size_t *needed);
+
+/**
+ * Copy the control vertex of every entry into `out`. `capacity` and `*needed` count
+ * entries (copy-out protocol).
+ */
+enum profsubd_status profsubd_stencil_table_get_indices(const struct profsubd_stencil_table *table,
+                                                        uint32_t *out,
+                                                        size_t capacity,
+                                                        size_t *needed);
+
+/**
+ * Copy the weight of every entry into `out`. `capacity` and `*needed` count entries
+ * (copy-out protocol).
+ */
+enum profsubd_status profsubd_stencil_table_get_weights(const struct profsubd_stencil_table *table,
+                                                        double *out,
+                                                        size_t capacity,
+                                                        size_t *needed);
+
+/**
+ * Apply every row to `points` (`num_points` points of 3 doubles, one per control vertex)
+ * and write one point (3 doubles) per row into `out`. `capacity` and `*needed` count points
+ * (copy-out protocol). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` if a stencil refers to a
+ * control vertex beyond `num_points`.
+ */
+enum profsubd_status profsubd_stencil_table_apply(const struct profsubd_stencil_table *table,
+                                                  const double *points,
+                                                  size_t num_points,
+                                                  double *out,
+                                                  size_t capacity,
+                                                  size_t *needed);
 
 /**
  * Build a mesh from caller arrays (copied); `*out` receives the new handle. Errors:

@@ -53,6 +53,7 @@
 pub mod error;
 pub mod evaluator;
 pub mod handle;
+pub mod limit;
 pub mod mesh;
 pub mod mesh_io;
 pub mod mesh_topology;
@@ -64,6 +65,7 @@ pub mod status;
 pub mod version;
 
 pub use evaluator::profsubd_evaluator;
+pub use limit::profsubd_stencil_table;
 pub use mesh::{profsubd_mesh, profsubd_mesh_desc};
 pub use mesh_topology::profsubd_mesh_report;
 pub use options::profsubd_options;

@@ -157,6 +157,34 @@ typedef enum profsubd_limit_quantity {
 } profsubd_limit_quantity;
 
 /**
+ * Values for `profsubd_options_set_interpolation` (passed as `int32_t`).
+ */
+typedef enum profsubd_interpolation {
+    /**
+     * C² cubic spline with chord-length parameter, broken at corners (the default).
+     */
+    PROFSUBD_INTERPOLATION_SPLINE = 0,
+    /**
+     * Straight segments between the points.
+     */
+    PROFSUBD_INTERPOLATION_POLYLINE = 1,
+} profsubd_interpolation;
+
+/**
+ * Values for `profsubd_options_set_caps` (passed as `int32_t`).
+ */
+typedef enum profsubd_caps {
+    /**
+     * Ends that do not meet the axis stay open boundaries (the default).
+     */
+    PROFSUBD_CAPS_OPEN = 0,
+    /**
+     * Such ends are closed by flat caps, creased where they meet the side.
+     */
+    PROFSUBD_CAPS_FLAT = 1,
+} profsubd_caps;
+
+/**
  * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
  * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
@@ -182,6 +210,12 @@ typedef struct profsubd_mesh profsubd_mesh;
  * meaning "nothing set": the mesh's tags and the defaults apply.
  */
 typedef struct profsubd_options profsubd_options;
+
+/**
+ * A built profile model (opaque): the fitted mesh and the data points. Release with
+ * `profsubd_profile_free`.
+ */
+typedef struct profsubd_profile profsubd_profile;
 
 /**
  * A table of stencils (opaque, immutable, safe to share between threads): row `i` is a
@@ -329,6 +363,84 @@ typedef struct profsubd_mesh_report {
      */
     size_t num_inconsistent_edges;
 } profsubd_mesh_report;
+
+/**
+ * The four silhouettes as caller arrays. Each curve is `N` points of 2 doubles `(w, z)`,
+ * bottom to top: `w` is x for `c1` (+x side) and `c3` (−x side), y for `c2` (+y) and `c4`
+ * (−y). `c3` / `c4` NULL with 0 points: the mirror of `c1` / `c2`. `cK_corners` lists point
+ * indices forced to be corners (may be NULL when its count is 0). Zero-initialize, set
+ * `struct_size`, then the arrays you have.
+ */
+typedef struct profsubd_profile_curves {
+    /**
+     * Must be `sizeof(profsubd_profile_curves)`.
+     */
+    size_t struct_size;
+    /**
+     * `2 * c1_points` doubles.
+     */
+    const double *c1;
+    /**
+     * Points of `c1` (at least 2).
+     */
+    size_t c1_points;
+    /**
+     * `2 * c2_points` doubles.
+     */
+    const double *c2;
+    /**
+     * Points of `c2` (at least 2).
+     */
+    size_t c2_points;
+    /**
+     * `2 * c3_points` doubles, or NULL for the mirror of `c1`.
+     */
+    const double *c3;
+    /**
+     * Points of `c3` (0: mirror of `c1`).
+     */
+    size_t c3_points;
+    /**
+     * `2 * c4_points` doubles, or NULL for the mirror of `c2`.
+     */
+    const double *c4;
+    /**
+     * Points of `c4` (0: mirror of `c2`).
+     */
+    size_t c4_points;
+    /**
+     * Forced corner point indices of `c1`.
+     */
+    const uint32_t *c1_corners;
+    /**
+     * Number of forced corners of `c1`.
+     */
+    size_t c1_num_corners;
+    /**
+     * Forced corner point indices of `c2`.
+     */
+    const uint32_t *c2_corners;
+    /**
+     * Number of forced corners of `c2`.
+     */
+    size_t c2_num_corners;
+    /**
+     * Forced corner point indices of `c3`.
+     */
+    const uint32_t *c3_corners;
+    /**
+     * Number of forced corners of `c3`.
+     */
+    size_t c3_num_corners;
+    /**
+     * Forced corner point indices of `c4`.
+     */
+    const uint32_t *c4_corners;
+    /**
+     * Number of forced corners of `c4`.
+     */
+    size_t c4_num_corners;
+} profsubd_profile_curves;
 
 #ifdef __cplusplus
 extern "C" {
@@ -694,6 +806,87 @@ enum profsubd_status profsubd_options_set_crease_method(struct profsubd_options 
  */
 enum profsubd_status profsubd_options_set_triangle_rule(struct profsubd_options *options,
                                                         int32_t rule);
+
+/**
+ * Build a profile model: blend the sweeps of the four curves, sample data points, build
+ * the quad cage (pole caps, tips, creases) and fit it so that the exact limit surface
+ * passes through every data point. `options` may be NULL (defaults); its subdivision
+ * settings are not used: the model is always fitted, and tagged, for edge-and-corner
+ * boundaries and uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves
+ * or settings (fewer than 2 points, NaN, curves running top to bottom, a curve crossing the
+ * axis, unequal pole heights, ...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if
+ * the fit misses its tolerance.
+ */
+enum profsubd_status profsubd_profile_build(const struct profsubd_profile_curves *curves,
+                                            const struct profsubd_options *options,
+                                            struct profsubd_profile **out);
+
+/**
+ * Release a profile model. NULL is a no-op.
+ */
+void profsubd_profile_free(struct profsubd_profile *profile);
+
+/**
+ * A new mesh handle (caller-owned) with the model's fitted control mesh: quads, crease and
+ * corner tags, option tags.
+ */
+enum profsubd_status profsubd_profile_get_mesh(const struct profsubd_profile *profile,
+                                               struct profsubd_mesh **out);
+
+/**
+ * Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
+ * position equals point `i`. `capacity` and `*needed` count doubles; copy-out protocol as
+ * `profsubd_mesh_get_positions`.
+ */
+enum profsubd_status profsubd_profile_get_targets(const struct profsubd_profile *profile,
+                                                  double *out,
+                                                  size_t capacity,
+                                                  size_t *needed);
+
+/**
+ * The fit's achieved residual (largest distance between a vertex's limit position and its
+ * data point) and the tolerance it met (1e-10 × the data points' bounding-box diagonal).
+ * Either output may be NULL.
+ */
+enum profsubd_status profsubd_profile_get_fit_residual(const struct profsubd_profile *profile,
+                                                       double *residual,
+                                                       double *tolerance);
+
+/**
+ * Set the number of meridians (vertices per ring): a multiple of 4, 4 to 4096.
+ */
+enum profsubd_status profsubd_options_set_around(struct profsubd_options *options, uint32_t around);
+
+/**
+ * Set the number of ring intervals from bottom to top: 1 to 4096.
+ */
+enum profsubd_status profsubd_options_set_along(struct profsubd_options *options, uint32_t along);
+
+/**
+ * Set the corner angle in degrees, in (0, 180]: a curve turning by more is creased there.
+ */
+enum profsubd_status profsubd_options_set_sharp_angle(struct profsubd_options *options,
+                                                      double degrees);
+
+/**
+ * Set the sharpness of crease edges at corners: a finite number >= 0 (10 or more is
+ * infinitely sharp, the default).
+ */
+enum profsubd_status profsubd_options_set_crease_sharpness(struct profsubd_options *options,
+                                                           float sharpness);
+
+/**
+ * Set how curve points are joined: `PROFSUBD_INTERPOLATION_SPLINE` or
+ * `PROFSUBD_INTERPOLATION_POLYLINE`.
+ */
+enum profsubd_status profsubd_options_set_interpolation(struct profsubd_options *options,
+                                                        int32_t interpolation);
+
+/**
+ * Set what closes ends that do not meet the axis: `PROFSUBD_CAPS_OPEN` or
+ * `PROFSUBD_CAPS_FLAT`.
+ */
+enum profsubd_status profsubd_options_set_caps(struct profsubd_options *options, int32_t caps);
 
 /**
  * Refine `mesh` uniformly `level` times (0 to 8) with Catmull-Clark; `*out` receives the

@@ -11,6 +11,7 @@
 pub mod check;
 pub mod convert;
 pub mod limit;
+pub mod profile;
 pub mod refine;
 
 use std::ffi::OsString;
@@ -75,6 +76,14 @@ pub enum Command {
     /// face (the face index on a mesh of quads; a face with N != 4 vertices counts as N
     /// faces, one per corner: (0,0) at the corner, (1,1) at the face centre).
     Limit(limit::LimitArgs),
+    /// Build an interpolating Catmull-Clark mesh from profile curves (Hui & Lai).
+    ///
+    /// Reads four planar silhouettes from JSON (c1: +x, c2: +y, c3: -x, c4: -y; c3/c4
+    /// default to mirrors), blends their sweeps, samples data points on rings x meridians
+    /// (rings through every corner), closes poles with quad caps (smooth) or a corner tip
+    /// (pointed), creases rings at corners, and fits the control points so that the exact
+    /// limit surface passes through every data point. Without INPUT: a built-in bottle.
+    Profile(profile::ProfileArgs),
 }
 
 /// Subdivision option flags. Given on the command line they override the tags of the mesh
@@ -181,6 +190,7 @@ pub fn dispatch(command: &Command) -> Result<i32> {
         Command::Convert(args) => convert::run(args),
         Command::Refine(args) => refine::run(args),
         Command::Limit(args) => limit::run(args),
+        Command::Profile(args) => profile::run(args),
     }
 }
 

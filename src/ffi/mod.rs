@@ -59,6 +59,7 @@ pub mod mesh_io;
 pub mod mesh_topology;
 pub mod options;
 pub mod panic;
+pub mod profile;
 pub mod ptr;
 pub mod refine;
 pub mod status;

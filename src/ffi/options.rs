@@ -59,6 +59,8 @@ pub struct profsubd_options {
 pub struct OptionsData {
     /// Subdivision rules set explicitly by the caller.
     pub subdiv: PartialOptions,
+    /// Profile construction settings (`src/ffi/profile.rs`).
+    pub profile: crate::ffi::profile::ProfileSettings,
 }
 
 impl Handle for profsubd_options {

@@ -13,6 +13,13 @@ use faer::Mat;
 use glam::DVec3;
 
 use crate::error::{Error, Result};
+use crate::eval::{limit_stencils, StencilTable};
+use crate::mesh::Mesh;
+use crate::options::SubdivOptions;
+
+/// Relative tolerance of [`fit_limit`]: residual ≤ this × the data points' bounding-box
+/// diagonal.
+pub const RELATIVE_TOLERANCE: f64 = 1e-10;
 
 /// A square sparse matrix in compressed rows: row `i` has weights `weights[offsets[i]..
 /// offsets[i+1]]` on columns `indices[..]` (the layout of a limit stencil table).
@@ -144,6 +151,46 @@ pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, 
             refinements,
         },
     ))
+}
+
+impl<'a> From<&'a StencilTable> for CsrRef<'a> {
+    fn from(t: &'a StencilTable) -> Self {
+        CsrRef {
+            offsets: &t.offsets,
+            indices: &t.indices,
+            weights: &t.weights,
+        }
+    }
+}
+
+/// Move the control points of `mesh` so that the exact limit position of vertex `i` (under
+/// `options`, with the mesh's creases and corners) is `targets[i]`, to a residual ≤
+/// [`RELATIVE_TOLERANCE`] × the targets' bounding-box diagonal. Topology and tags are kept.
+///
+/// Errors: [`Error::InvalidArgument`] if the target count differs from the vertex count;
+/// [`Error::NumericalFailure`] if the stencil matrix is singular or the tolerance is missed.
+pub fn fit_limit(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    targets: &[DVec3],
+) -> Result<(Mesh, FitReport)> {
+    if targets.len() != mesh.num_vertices() {
+        return Err(Error::invalid_argument(format!(
+            "{} targets for a mesh of {} vertices",
+            targets.len(),
+            mesh.num_vertices()
+        )));
+    }
+    let table = limit_stencils(mesh, options)?;
+    let (lo, hi) = targets.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    let tolerance = RELATIVE_TOLERANCE * (hi - lo).length().max(f64::MIN_POSITIVE);
+    let (x, report) = solve((&table).into(), targets, tolerance)?;
+    let mut parts = mesh.parts().clone();
+    parts.positions = x;
+    Ok((Mesh::from_parts(parts)?, report))
 }
 
 #[cfg(test)]

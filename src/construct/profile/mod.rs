@@ -17,6 +17,7 @@
 pub mod input;
 pub mod param;
 pub mod sampling;
+pub mod shapes;
 pub mod silhouettes;
 pub mod sweep;
 
@@ -29,7 +30,8 @@ pub use silhouettes::EndKind;
 
 use crate::construct::grid::QuadMeshBuilder;
 use crate::error::Result;
-use crate::mesh::{MeshParts, SHARPNESS_INFINITE};
+use crate::fit::{fit_limit, FitReport};
+use crate::mesh::{Mesh, MeshParts, SHARPNESS_INFINITE};
 use crate::options::{BoundaryInterpolation, CreaseMethod, PartialOptions};
 use param::CommonParam;
 use sampling::Rings;
@@ -141,6 +143,41 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
 /// The data point of every vertex of `cage` (its positions), as 3-D points.
 pub fn targets(cage: &ProfileCage) -> &[DVec3] {
     &cage.parts.positions
+}
+
+/// A fitted profile model: the control mesh and what it interpolates.
+#[derive(Debug, Clone)]
+pub struct ProfileModel {
+    /// The control mesh (fitted positions, crease and corner tags, option tags).
+    pub mesh: Mesh,
+    /// The data point each control vertex's limit position interpolates, in vertex order.
+    pub targets: Vec<DVec3>,
+    /// The achieved fit residual and its tolerance.
+    pub fit: FitReport,
+    /// Bottom and top end kinds.
+    pub ends: [EndKind; 2],
+    /// Ring index (0 = bottom) of each ring that carries crease edges.
+    pub crease_rings: Vec<usize>,
+}
+
+/// The whole pipeline: silhouettes → data points → cage → control points whose exact limit
+/// surface passes through every data point.
+///
+/// Errors: [`crate::Error::InvalidArgument`] for bad input (each check says what and where),
+/// [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
+pub fn build(input: &ProfileInput) -> Result<ProfileModel> {
+    let cage = build_cage(input)?;
+    let targets = cage.parts.positions.clone();
+    let cage_mesh = Mesh::from_parts(cage.parts)?;
+    let options = mesh_options().resolve();
+    let (mesh, fit) = fit_limit(&cage_mesh, &options, &targets)?;
+    Ok(ProfileModel {
+        mesh,
+        targets,
+        fit,
+        ends: cage.ends,
+        crease_rings: cage.crease_rings,
+    })
 }
 
 #[cfg(test)]

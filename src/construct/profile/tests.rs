@@ -4,33 +4,10 @@ use std::collections::HashMap;
 
 use glam::DVec3;
 
+use super::shapes::{double_cone, ellipsoid};
 use super::*;
 use crate::error::Error;
 use crate::mesh::Mesh;
-
-/// Silhouettes of the ellipsoid x²/a² + y²/b² + z²/c² = 1 with `m + 1` points each.
-pub(crate) fn ellipsoid(a: f64, b: f64, c: f64, m: usize) -> ProfileInput {
-    let curve = |r: f64| -> Vec<[f64; 2]> {
-        (0..=m)
-            .map(|i| {
-                let phi = std::f64::consts::PI * i as f64 / m as f64;
-                [r * phi.sin(), -c * phi.cos()]
-            })
-            .collect()
-    };
-    ProfileInput::new(curve(a), curve(b))
-}
-
-/// Double cone of radius `r`, half-height `h`, `m` points per half.
-pub(crate) fn double_cone(r: f64, h: f64, m: usize) -> ProfileInput {
-    let c: Vec<[f64; 2]> = (0..=2 * m)
-        .map(|i| {
-            let z = h * (i as f64 / m as f64 - 1.0);
-            [r * (1.0 - z.abs() / h), z]
-        })
-        .collect();
-    ProfileInput::new(c.clone(), c)
-}
 
 /// Edges with their face counts, and each vertex's valence.
 fn edge_stats(p: &MeshParts) -> (HashMap<(u32, u32), usize>, Vec<usize>) {

@@ -1,0 +1,213 @@
+use std::mem::size_of;
+use std::ptr::{null, null_mut};
+
+use super::*;
+use crate::ffi::error::last_error;
+use crate::ffi::mesh::{mesh_arg, profsubd_mesh_free};
+use crate::ffi::options::{profsubd_options_free, profsubd_options_new};
+use crate::ffi::status::profsubd_status::*;
+
+/// A double cone: c1 as (x, z) pairs, 9 points.
+fn cone() -> Vec<f64> {
+    (0..=8)
+        .flat_map(|i| {
+            let z = i as f64 / 4.0 - 1.0;
+            [1.0 - z.abs(), z]
+        })
+        .collect()
+}
+
+fn curves(c: &[f64]) -> profsubd_profile_curves {
+    profsubd_profile_curves {
+        struct_size: size_of::<profsubd_profile_curves>(),
+        c1: c.as_ptr(),
+        c1_points: c.len() / 2,
+        c2: c.as_ptr(),
+        c2_points: c.len() / 2,
+        c3: null(),
+        c3_points: 0,
+        c4: null(),
+        c4_points: 0,
+        c1_corners: null(),
+        c1_num_corners: 0,
+        c2_corners: null(),
+        c2_num_corners: 0,
+        c3_corners: null(),
+        c3_num_corners: 0,
+        c4_corners: null(),
+        c4_num_corners: 0,
+    }
+}
+
+fn options() -> *mut profsubd_options {
+    let mut o = null_mut();
+    assert_eq!(unsafe { profsubd_options_new(&mut o) }, PROFSUBD_OK);
+    o
+}
+
+#[test]
+fn builds_the_same_model_as_the_rust_api() {
+    let c = cone();
+    let o = options();
+    unsafe {
+        assert_eq!(profsubd_options_set_around(o, 8), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_along(o, 6), PROFSUBD_OK);
+        let mut p = null_mut();
+        assert_eq!(profsubd_profile_build(&curves(&c), o, &mut p), PROFSUBD_OK);
+        let mut m = null_mut();
+        assert_eq!(profsubd_profile_get_mesh(p, &mut m), PROFSUBD_OK);
+        let pts: Vec<[f64; 2]> = c.chunks(2).map(|q| [q[0], q[1]]).collect();
+        let mut input = ProfileInput::new(pts.clone(), pts);
+        input.around = 8;
+        input.along = 6;
+        let model = build(&input).unwrap();
+        assert_eq!(mesh_arg(m, "m").unwrap(), &model.mesh);
+        let mut needed = 0;
+        assert_eq!(
+            profsubd_profile_get_targets(p, null_mut(), 0, &mut needed),
+            PROFSUBD_ERROR_BUFFER_TOO_SMALL
+        );
+        assert_eq!(needed, 3 * model.targets.len());
+        let mut t = vec![0.0; needed];
+        assert_eq!(
+            profsubd_profile_get_targets(p, t.as_mut_ptr(), t.len(), &mut needed),
+            PROFSUBD_OK
+        );
+        let expect: Vec<f64> = model.targets.iter().flat_map(|v| v.to_array()).collect();
+        assert_eq!(t, expect);
+        let (mut r, mut tol) = (f64::NAN, f64::NAN);
+        assert_eq!(
+            profsubd_profile_get_fit_residual(p, &mut r, &mut tol),
+            PROFSUBD_OK
+        );
+        assert!(r <= tol && tol > 0.0);
+        profsubd_mesh_free(m);
+        profsubd_profile_free(p);
+        profsubd_options_free(o);
+    }
+}
+
+#[test]
+fn bad_inputs_and_settings_give_specific_statuses() {
+    let c = cone();
+    let o = options();
+    unsafe {
+        for v in [0, 6, 4100] {
+            assert_eq!(
+                profsubd_options_set_around(o, v),
+                PROFSUBD_ERROR_INVALID_ARGUMENT
+            );
+        }
+        assert!(last_error().contains("multiple of 4"));
+        assert_eq!(
+            profsubd_options_set_along(o, 0),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        for a in [0.0, -5.0, 181.0, f64::NAN] {
+            assert_eq!(
+                profsubd_options_set_sharp_angle(o, a),
+                PROFSUBD_ERROR_INVALID_ARGUMENT
+            );
+        }
+        for s in [-1.0, f32::NAN, f32::INFINITY] {
+            assert_eq!(
+                profsubd_options_set_crease_sharpness(o, s),
+                PROFSUBD_ERROR_INVALID_ARGUMENT
+            );
+        }
+        assert_eq!(
+            profsubd_options_set_interpolation(o, 2),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_caps(o, -1),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            handle::borrow(o, "o").unwrap().profile,
+            ProfileSettings::default()
+        );
+        assert_eq!(profsubd_options_set_interpolation(o, 1), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_caps(o, 1), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_sharp_angle(o, 45.0), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_crease_sharpness(o, 2.0), PROFSUBD_OK);
+        assert_eq!(
+            profsubd_options_set_around(null_mut(), 8),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+
+        let mut p = null_mut();
+        assert_eq!(
+            profsubd_profile_build(null(), o, &mut p),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        let mut d = curves(&c);
+        assert_eq!(
+            profsubd_profile_build(&d, o, null_mut()),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        d.struct_size = 8;
+        assert_eq!(
+            profsubd_profile_build(&d, o, &mut p),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("struct_size"));
+        let mut d = curves(&c);
+        d.c2 = null();
+        assert_eq!(
+            profsubd_profile_build(&d, o, &mut p),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        let mut d = curves(&c);
+        d.c1_points = 1;
+        assert_eq!(
+            profsubd_profile_build(&d, o, &mut p),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("at least 2 points"));
+        let mut nan = c.clone();
+        nan[5] = f64::NAN;
+        let d = curves(&nan);
+        assert_eq!(
+            profsubd_profile_build(&d, o, &mut p),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("not a finite number"));
+        let mut rev: Vec<f64> = c.chunks(2).rev().flatten().copied().collect();
+        rev.truncate(c.len());
+        let mut d = curves(&c);
+        d.c2 = rev.as_ptr();
+        assert_eq!(
+            profsubd_profile_build(&d, o, &mut p),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("bottom to top"));
+        let bad_corner = [99u32];
+        let mut d = curves(&c);
+        d.c1_corners = bad_corner.as_ptr();
+        d.c1_num_corners = 1;
+        assert_eq!(
+            profsubd_profile_build(&d, o, &mut p),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(p.is_null());
+
+        let mut fake = [0u64; 4];
+        let f = fake.as_mut_ptr().cast::<profsubd_profile>();
+        let mut m = null_mut();
+        assert_eq!(
+            profsubd_profile_get_mesh(f, &mut m),
+            PROFSUBD_ERROR_INVALID_HANDLE
+        );
+        assert_eq!(
+            profsubd_profile_get_targets(f, null_mut(), 0, null_mut()),
+            PROFSUBD_ERROR_INVALID_HANDLE
+        );
+        assert_eq!(
+            profsubd_profile_get_fit_residual(null(), null_mut(), null_mut()),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        profsubd_profile_free(null_mut());
+        profsubd_options_free(o);
+    }
+}

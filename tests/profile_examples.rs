@@ -1,0 +1,172 @@
+//! The bundled profile examples: each regenerates to its checked-in OBJ (same topology and
+//! tags, positions within 1e-9 × diagonal), has the promised topology, and the CLI writes
+//! the same mesh plus one target line per vertex; bad input writes nothing.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use profsubd::cli::profile::read_input;
+use profsubd::construct::profile::{build, EndKind};
+use profsubd::io::obj::read_obj_file;
+use profsubd::Mesh;
+
+const EXAMPLES: [&str; 4] = ["bottle", "vase", "mouse", "spinning_top"];
+
+fn example(name: &str, ext: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/profiles")
+        .join(format!("{name}.{ext}"))
+}
+
+fn profsubd(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_profsubd"))
+        .args(args)
+        .output()
+        .expect("run profsubd")
+}
+
+/// Same faces and tags, positions equal within `1e-9 ×` the diagonal.
+fn assert_same(a: &Mesh, b: &Mesh, what: &str) {
+    assert_eq!(a.face_sizes(), b.face_sizes(), "{what}");
+    assert_eq!(a.face_indices(), b.face_indices(), "{what}");
+    assert_eq!(a.creases(), b.creases(), "{what}");
+    assert_eq!(a.corners(), b.corners(), "{what}");
+    assert_eq!(a.options(), b.options(), "{what}");
+    let tol = 1e-9 * a.bounding_box_diagonal();
+    for (i, (p, q)) in a.positions().iter().zip(b.positions()).enumerate() {
+        assert!((*p - *q).length() <= tol, "{what}: vertex {i} {p} vs {q}");
+    }
+}
+
+/// Edge face counts and vertex valences.
+fn topology(m: &Mesh) -> (HashMap<(u32, u32), usize>, Vec<usize>) {
+    let mut edges = HashMap::new();
+    for f in 0..m.num_faces() {
+        let face = m.face(f);
+        for i in 0..face.len() {
+            let (a, b) = (face[i], face[(i + 1) % face.len()]);
+            *edges.entry((a.min(b), a.max(b))).or_insert(0) += 1;
+        }
+    }
+    let mut val = vec![0; m.num_vertices()];
+    for &(a, b) in edges.keys() {
+        val[a as usize] += 1;
+        val[b as usize] += 1;
+    }
+    (edges, val)
+}
+
+#[test]
+fn examples_regenerate_to_their_checked_in_obj_files() {
+    for name in EXAMPLES {
+        let input = read_input(Some(&example(name, "json"))).unwrap();
+        let model = build(&input).unwrap();
+        let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
+        assert_same(&model.mesh, &stored, name);
+        assert!(model.fit.residual <= 1e-10 * model.mesh.bounding_box_diagonal());
+        assert!(model.mesh.face_sizes().iter().all(|&n| n == 4));
+        let (edges, val) = topology(&model.mesh);
+        let tips: Vec<u32> = model.mesh.corners().iter().map(|c| c.vertex).collect();
+        for (v, &n) in val.iter().enumerate() {
+            let boundary_vertex = edges
+                .iter()
+                .any(|(&(a, b), &c)| c == 1 && (a as usize == v || b as usize == v));
+            if !tips.contains(&(v as u32)) && !boundary_vertex {
+                assert!((3..=5).contains(&n), "{name}: vertex {v} has valence {n}");
+            }
+        }
+        let closed = !model.ends.contains(&EndKind::Open);
+        let boundary = edges.values().filter(|&&c| c == 1).count();
+        assert!(edges.values().all(|&c| c <= 2), "{name}: non-manifold edge");
+        if closed {
+            assert_eq!(boundary, 0, "{name}");
+            let euler = val.len() as i64 - edges.len() as i64 + model.mesh.num_faces() as i64;
+            assert_eq!(euler, 2, "{name}");
+        } else {
+            assert_eq!(boundary, input.around as usize, "{name}: one open ring");
+        }
+    }
+}
+
+#[test]
+fn cli_builds_the_default_bottle_with_targets() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("model.obj");
+    let targets = dir.path().join("targets.txt");
+    let o = profsubd(&[
+        "profile",
+        "-o",
+        out.to_str().unwrap(),
+        "--targets",
+        targets.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let written = read_obj_file(&out).unwrap().mesh;
+    let stored = read_obj_file(&example("bottle", "obj")).unwrap().mesh;
+    assert_same(&written, &stored, "default model");
+    let model = build(&read_input(None).unwrap()).unwrap();
+    let lines: Vec<String> = std::fs::read_to_string(&targets)
+        .unwrap()
+        .lines()
+        .map(String::from)
+        .collect();
+    assert_eq!(lines.len(), written.num_vertices());
+    for (line, t) in lines.iter().zip(&model.targets) {
+        let xyz: Vec<f64> = line.split(' ').map(|s| s.parse().unwrap()).collect();
+        assert_eq!(xyz, t.to_array().to_vec());
+    }
+}
+
+#[test]
+fn cli_rejects_bad_input_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("model.obj");
+    for (json, expect) in [
+        (
+            r#"{"c1": [[0,0]], "c2": [[0,0],[1,1]]}"#,
+            "at least 2 points",
+        ),
+        (
+            r#"{"c1": [[0,0],[1,1],[0,2]], "c2": [[0,0],[1,1],[0,2]], "around": 6}"#,
+            "multiple of 4",
+        ),
+        (
+            r#"{"c1": [[0,0],[1,1],[0,2]], "c2": [[0,2],[1,1],[0,0]]}"#,
+            "bottom to top",
+        ),
+        (
+            r#"{"c1": [[0,0],[-1,1],[0,2]], "c2": [[0,0],[1,1],[0,2]]}"#,
+            "crosses the axis",
+        ),
+        (
+            r#"{"c1": [[0,0],[1,1],[0,2]], "c2": [[0,0],[1,1],[0,2]], "colour": 1}"#,
+            "unknown field",
+        ),
+        (
+            r#"{"c1": [[0,0],[1,1],[0,2]], "c2": [[0,0],[1,1],[0,2]], "along": 100000}"#,
+            "along",
+        ),
+    ] {
+        let input = dir.path().join("in.json");
+        std::fs::write(&input, json).unwrap();
+        let o = profsubd(&[
+            "profile",
+            input.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(1), "{json}");
+        assert!(err.contains(expect), "{json}: {err}");
+        assert!(!out.exists(), "{json}: output written");
+    }
+    let o = profsubd(&[
+        "profile",
+        "/nonexistent/in.json",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("/nonexistent/in.json"));
+}

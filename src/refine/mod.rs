@@ -51,8 +51,33 @@ pub fn refine_uniform_ordered(
     level: u32,
     order: VertexOrder,
 ) -> Result<Mesh> {
-    let (top, positions) = refine_levels(mesh, options, level, order)?;
-    output::to_mesh(&top, positions)
+    check_level(mesh, level)?;
+    let base = Level::from_mesh_with_options(mesh, options);
+    if level == 0 {
+        let sharpened = |v: usize| base.vertex_topology(v).is_sharpened(options.boundary);
+        let flags: Vec<bool> = (0..base.num_vertices()).map(sharpened).collect();
+        let creases = output::creases_of(&base);
+        return output::to_mesh(base, mesh.positions().to_vec(), &flags, creases);
+    }
+    let mut current = base;
+    let mut positions = mesh.positions().to_vec();
+    for _ in 1..level {
+        let r = refine(&current, order);
+        positions = interpolate(&current, &r, &positions);
+        current = r.child;
+    }
+    // The last level needs no neighbourhoods (Far's minimal topology): its creases and the
+    // vertices Far sharpens from topology are read off the parent (a child vertex has its
+    // parent's topology, a child edge its parent's boundary and non-manifold status).
+    let r = step::refine_last(&current, order);
+    positions = interpolate(&current, &r, &positions);
+    let mut flags = vec![false; r.child.num_vertices()];
+    for v in 0..current.num_vertices() {
+        flags[r.vertex_child_vertex(v) as usize] =
+            current.vertex_topology(v).is_sharpened(options.boundary);
+    }
+    let creases = output::creases_of_child(&current, &r);
+    output::to_mesh(r.child, positions, &flags, creases)
 }
 
 /// Refine `mesh` `level` times and return the last level with its vertex positions.
@@ -64,6 +89,18 @@ pub fn refine_levels(
     level: u32,
     order: VertexOrder,
 ) -> Result<(Level, Vec<DVec3>)> {
+    check_level(mesh, level)?;
+    let mut current = Level::from_mesh_with_options(mesh, options);
+    let mut positions = mesh.positions().to_vec();
+    for _ in 0..level {
+        let r = refine(&current, order);
+        positions = interpolate(&current, &r, &positions);
+        current = r.child;
+    }
+    Ok((current, positions))
+}
+
+fn check_level(mesh: &Mesh, level: u32) -> Result<()> {
     if level > MAX_LEVEL {
         return Err(Error::invalid_argument(format!(
             "refinement level {level} is above the maximum {MAX_LEVEL}"
@@ -77,12 +114,5 @@ pub fn refine_levels(
             mesh.face_indices().len()
         )));
     }
-    let mut current = Level::from_mesh_with_options(mesh, options);
-    let mut positions = mesh.positions().to_vec();
-    for _ in 0..level {
-        let r = refine(&current, order);
-        positions = interpolate(&current, &r, &positions);
-        current = r.child;
-    }
-    Ok((current, positions))
+    Ok(())
 }

@@ -4,49 +4,83 @@
 
 use glam::DVec3;
 
+use super::step::Refinement;
 use crate::error::Result;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts};
 use crate::options::PartialOptions;
 use crate::topology::Level;
 
-pub(super) fn to_mesh(level: &Level, positions: Vec<DVec3>) -> Result<Mesh> {
-    let options = *level.options();
-    let nf = level.num_faces();
-    let creases = (0..level.num_edges())
+/// Whether an edge's sharpness is written as a tag: sharp, and not sharpened by Far itself.
+fn is_tagged(sharpness: f32, boundary: bool, non_manifold: bool) -> bool {
+    sharpness > 0.0 && !boundary && !non_manifold
+}
+
+/// The crease tags of a complete level, in edge order.
+pub(super) fn creases_of(level: &Level) -> Vec<Crease> {
+    (0..level.num_edges())
         .filter(|&e| {
-            level.edge_sharpness(e) > 0.0
-                && !level.is_edge_boundary(e)
-                && !level.is_edge_non_manifold(e)
+            is_tagged(
+                level.edge_sharpness(e),
+                level.is_edge_boundary(e),
+                level.is_edge_non_manifold(e),
+            )
         })
         .map(|e| Crease {
             vertices: level.edge_vertices(e),
             sharpness: level.edge_sharpness(e),
         })
-        .collect();
+        .collect()
+}
+
+/// The crease tags of the child of `r`, in child edge order, from the parent: only halves of
+/// parent edges can be sharp, and a half is a boundary or non-manifold edge when its parent is.
+pub(super) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
+    let mut out = Vec::new();
+    for e in 0..parent.num_edges() {
+        let (boundary, nm) = (parent.is_edge_boundary(e), parent.is_edge_non_manifold(e));
+        for (j, &end) in parent.edge_vertices(e).iter().enumerate() {
+            let s = r.child.edge_sharpness(r.edge_child_edge(e, j) as usize);
+            if is_tagged(s, boundary, nm) {
+                out.push(Crease {
+                    vertices: [r.edge_child_vertex(e), r.vertex_child_vertex(end as usize)],
+                    sharpness: s,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// `level` (whose edge and vertex relations may be absent) with its positions as a mesh;
+/// `sharpened[v]` tells whether Far sharpens vertex `v` from topology alone.
+pub(super) fn to_mesh(
+    level: Level,
+    positions: Vec<DVec3>,
+    sharpened: &[bool],
+    creases: Vec<Crease>,
+) -> Result<Mesh> {
+    let options = *level.options();
+    let nf = level.num_faces();
     let corners = (0..level.num_vertices())
-        .filter(|&v| {
-            level.vertex_sharpness(v) > 0.0
-                && !level.vertex_topology(v).is_sharpened(options.boundary)
-        })
+        .filter(|&v| level.vertex_sharpness(v) > 0.0 && !sharpened[v])
         .map(|v| Corner {
             vertex: v as u32,
             sharpness: level.vertex_sharpness(v),
         })
         .collect();
-    let face_indices: Vec<u32> = (0..nf)
-        .flat_map(|f| level.face_vertices(f).iter().copied())
+    let face_sizes = (0..nf)
+        .map(|f| level.face_vertices(f).len() as u32)
+        .collect();
+    let holes = (0..nf as u32)
+        .filter(|&f| level.is_face_hole(f as usize))
         .collect();
     let parts = MeshParts {
         positions,
-        face_sizes: (0..nf)
-            .map(|f| level.face_vertices(f).len() as u32)
-            .collect(),
-        face_indices,
+        face_sizes,
+        face_indices: level.face_verts,
         creases,
         corners,
-        holes: (0..nf as u32)
-            .filter(|&f| level.is_face_hole(f as usize))
-            .collect(),
+        holes,
         options: PartialOptions {
             boundary: Some(options.boundary),
             crease_method: Some(options.crease_method),

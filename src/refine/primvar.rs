@@ -11,6 +11,7 @@ use crate::catmark::masks::{
     VertexNeighbourhood,
 };
 use crate::catmark::Rule;
+use crate::options::TriangleSubdivision;
 use crate::topology::Level;
 
 /// Vertex data that can be refined: a value that starts at zero and accumulates weighted
@@ -108,10 +109,21 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
     }
 
     let mut emask = EdgeMask::default();
+    let smooth_triangles = options.triangles == TriangleSubdivision::Smooth;
     for e in 0..parent.num_edges() {
         let ev = parent.edge_vertices(e);
         let ef = parent.edge_faces(e);
         let cv = r.edge_child_vertex(e) as usize;
+        if parent.edge_sharpness(e) <= 0.0 && ef.len() == 2 && !smooth_triangles {
+            // The common case, the plain smooth mask, without building it.
+            let mut acc = T::zero();
+            acc.add_weighted(&src[ev[0] as usize], 0.25);
+            acc.add_weighted(&src[ev[1] as usize], 0.25);
+            acc.add_weighted(&dst[r.face_child_vertex(ef[0] as usize) as usize], 0.25);
+            acc.add_weighted(&dst[r.face_child_vertex(ef[1] as usize) as usize], 0.25);
+            dst[cv] = acc;
+            continue;
+        }
         let mut tri = [false; 2];
         if ef.len() == 2 {
             for (t, &f) in tri.iter_mut().zip(ef) {
@@ -146,6 +158,23 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
         let ve = parent.vertex_edges(v);
         let vf = parent.vertex_faces(v);
         let p_rule = parent.vertex_rule(v);
+        if p_rule == Rule::Smooth {
+            // The common case, the smooth mask (a smooth vertex stays smooth), inline.
+            let n = vf.len();
+            let w = 1.0 / (n * n) as f64;
+            let mut acc = T::zero();
+            for &f in vf {
+                acc.add_weighted(&dst[r.face_child_vertex(f as usize) as usize], w);
+            }
+            for &e in ve {
+                let [a, b] = parent.edge_vertices(e as usize);
+                let across = if a as usize == v { b } else { a };
+                acc.add_weighted(&src[across as usize], w);
+            }
+            acc.add_weighted(&src[v], (n as f64 - 2.0) / n as f64);
+            dst[cv] = acc;
+            continue;
+        }
         edge_sharpness.clear();
         if !matches!(p_rule, Rule::Smooth | Rule::Dart) {
             edge_sharpness.extend(ve.iter().map(|&e| parent.edge_sharpness(e as usize)));

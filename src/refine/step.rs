@@ -15,9 +15,10 @@
 
 use super::super::topology::Level;
 use crate::catmark::crease::{
-    is_infinite, is_semi_sharp, subdivide_edge_sharpness_at_vertex, subdivide_vertex_sharpness,
-    SHARPNESS_INFINITE,
+    is_infinite, is_semi_sharp, is_sharp, subdivide_edge_sharpness_at_vertex,
+    subdivide_vertex_sharpness, vertex_rule, SHARPNESS_INFINITE,
 };
+use crate::catmark::Rule;
 
 /// Order of the child vertices in a refined level.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -115,6 +116,17 @@ impl Rows {
 
 /// Refine `parent` once (uniformly), with child vertices in `order`.
 pub fn refine(parent: &Level, order: VertexOrder) -> Refinement {
+    refine_with(parent, order, true)
+}
+
+/// [`refine`] with only the child's face-vertices, sharpness and rules (Far's "minimal
+/// topology" for the last level): enough to interpolate into the child and to write its
+/// faces out, not to query its edges' or vertices' neighbourhoods or refine it further.
+pub(crate) fn refine_last(parent: &Level, order: VertexOrder) -> Refinement {
+    refine_with(parent, order, false)
+}
+
+fn refine_with(parent: &Level, order: VertexOrder, full: bool) -> Refinement {
     let nv = parent.num_vertices();
     let nf = parent.num_faces();
     let ne = parent.num_edges();
@@ -146,26 +158,64 @@ pub fn refine(parent: &Level, order: VertexOrder) -> Refinement {
         order,
         parent_counts: [nv as u32, nf as u32, ne as u32, nfv as u32],
     };
-    let child = build_faces(parent, &r);
+    let child = build_faces(parent, &r, full);
     r.child.face_offsets = child.0;
     r.child.face_verts = child.1;
     r.child.face_edges = child.2;
     r.child.face_holes = child.3;
-    build_edges(parent, &mut r);
+    build_edge_sharpness(parent, &mut r);
     build_vertices(parent, &mut r);
-    r.child.update_vertex_rules();
+    if full {
+        build_edge_relations(parent, &mut r);
+        build_vertex_relations(parent, &mut r);
+    }
+    r.child.vert_rules = child_rules(parent, &r);
     r
+}
+
+/// Rules of the child vertices from the parent, as Vtr propagates them: face points are
+/// smooth; an edge point follows the sharp halves of its edge; a vertex's child keeps a smooth
+/// parent's rule and otherwise counts its sharp child edges. (The same as classifying each
+/// child vertex from its own edges, without needing the child's vertex-edge relation.)
+fn child_rules(parent: &Level, r: &Refinement) -> Vec<Rule> {
+    let child = &r.child;
+    let mut rules = vec![Rule::Smooth; child.num_vertices()];
+    for v in 0..parent.num_vertices() {
+        if parent.vertex_rule(v) == Rule::Smooth {
+            continue;
+        }
+        let sharp = parent
+            .vertex_edges(v)
+            .iter()
+            .zip(parent.vertex_edge_local_indices(v))
+            .filter(|&(&e, &k)| {
+                is_sharp(child.edge_sharpness(r.edge_child_edge(e as usize, k as usize) as usize))
+            })
+            .count();
+        let cv = r.vertex_child_vertex(v) as usize;
+        rules[cv] = vertex_rule(child.vertex_sharpness(cv), sharp);
+    }
+    for e in 0..parent.num_edges() {
+        if parent.edge_sharpness(e) <= 0.0 {
+            continue;
+        }
+        let sharp = (0..2)
+            .filter(|&j| is_sharp(child.edge_sharpness(r.edge_child_edge(e, j) as usize)))
+            .count();
+        rules[r.edge_child_vertex(e) as usize] = vertex_rule(0.0, sharp);
+    }
+    rules
 }
 
 type FaceArrays = (Vec<u32>, Vec<u32>, Vec<u32>, Vec<bool>);
 
 /// Child face-vertices and face-edges (`populateFaceVerticesFromParentFaces`,
 /// `populateFaceEdgesFromParentFaces`) and hole tags.
-fn build_faces(parent: &Level, r: &Refinement) -> FaceArrays {
+fn build_faces(parent: &Level, r: &Refinement, with_edges: bool) -> FaceArrays {
     let nfv = parent.num_face_vertices_total();
     let offsets: Vec<u32> = (0..=nfv as u32).map(|i| 4 * i).collect();
     let mut verts = vec![0u32; 4 * nfv];
-    let mut edges = vec![0u32; 4 * nfv];
+    let mut edges = vec![0u32; if with_edges { 4 * nfv } else { 0 }];
     let mut holes = Vec::with_capacity(nfv);
     for f in 0..parent.num_faces() {
         let fv = parent.face_vertices(f);
@@ -190,6 +240,10 @@ fn build_faces(parent: &Level, r: &Refinement) -> FaceArrays {
             verts[c + slots[2]] = face_point;
             verts[c + slots[3]] = r.edge_child_vertex(fe[j_prev] as usize);
 
+            holes.push(parent.is_face_hole(f));
+            if !with_edges {
+                continue;
+            }
             let corner = fv[j];
             let prev = parent.edge_vertices(fe[j_prev] as usize);
             let next = parent.edge_vertices(fe[j] as usize);
@@ -207,14 +261,48 @@ fn build_faces(parent: &Level, r: &Refinement) -> FaceArrays {
             edges[c + slots[1]] = (base + j) as u32;
             edges[c + slots[2]] = (base + j_prev) as u32;
             edges[c + slots[3]] = r.edge_child_edge(fe[j_prev] as usize, corner_in_prev);
-            holes.push(parent.is_face_hole(f));
         }
     }
     (offsets, verts, edges, holes)
 }
 
-/// Child edge-vertices, edge-faces, non-manifold tags and sharpness.
-fn build_edges(parent: &Level, r: &mut Refinement) {
+/// Child edge sharpness (`subdivideEdgeSharpness`) and non-manifold tags.
+fn build_edge_sharpness(parent: &Level, r: &mut Refinement) {
+    let nfv = parent.num_face_vertices_total();
+    let ne = parent.num_edges();
+    let total = nfv + 2 * ne;
+    let mut sharpness = vec![0.0f32; total];
+    let mut non_manifold = vec![false; total];
+    let method = parent.options.crease_method;
+    let mut around: Vec<f32> = Vec::new();
+    for e in 0..ne {
+        let p = parent.edge_sharpness(e);
+        let nm = parent.is_edge_non_manifold(e);
+        for (j, &end) in parent.edge_vertices(e).iter().enumerate() {
+            let c = nfv + 2 * e + j;
+            non_manifold[c] = nm;
+            sharpness[c] = if is_infinite(p) {
+                SHARPNESS_INFINITE
+            } else if is_semi_sharp(p) {
+                around.clear();
+                around.extend(
+                    parent
+                        .vertex_edges(end as usize)
+                        .iter()
+                        .map(|&x| parent.edge_sharpness(x as usize)),
+                );
+                subdivide_edge_sharpness_at_vertex(method, p, &around)
+            } else {
+                0.0
+            };
+        }
+    }
+    r.child.edge_sharpness = sharpness;
+    r.child.edge_non_manifold = non_manifold;
+}
+
+/// Child edge-vertices and edge-faces (`populateEdgeVerticesFrom*`, `populateEdgeFacesFrom*`).
+fn build_edge_relations(parent: &Level, r: &mut Refinement) {
     let nfv = parent.num_face_vertices_total();
     let ne = parent.num_edges();
     let total = nfv + 2 * ne;
@@ -238,17 +326,11 @@ fn build_edges(parent: &Level, r: &mut Refinement) {
             faces.end_row();
         }
     }
-    let mut sharpness = vec![0.0f32; total];
-    let mut non_manifold = vec![false; total];
-    let method = parent.options.crease_method;
-    let mut around: Vec<f32> = Vec::new();
     for e in 0..ne {
         let ev = parent.edge_vertices(e);
         let ef = parent.edge_faces(e);
         let el = parent.edge_face_local_indices(e);
-        let p = parent.edge_sharpness(e);
         for (j, &end) in ev.iter().enumerate() {
-            let c = nfv + 2 * e + j;
             edge_verts.push([r.edge_child_vertex(e), r.vertex_child_vertex(end as usize)]);
             for (&pf, &in_face) in ef.iter().zip(el) {
                 let pf = pf as usize;
@@ -276,21 +358,6 @@ fn build_edges(parent: &Level, r: &mut Refinement) {
                 );
             }
             faces.end_row();
-            non_manifold[c] = parent.is_edge_non_manifold(e);
-            sharpness[c] = if is_infinite(p) {
-                SHARPNESS_INFINITE
-            } else if is_semi_sharp(p) {
-                around.clear();
-                around.extend(
-                    parent
-                        .vertex_edges(end as usize)
-                        .iter()
-                        .map(|&x| parent.edge_sharpness(x as usize)),
-                );
-                subdivide_edge_sharpness_at_vertex(method, p, &around)
-            } else {
-                0.0
-            };
         }
     }
     let c = &mut r.child;
@@ -298,8 +365,6 @@ fn build_edges(parent: &Level, r: &mut Refinement) {
     c.edge_face_offsets = faces.offsets;
     c.edge_faces = faces.members;
     c.edge_face_locals = faces.locals;
-    c.edge_sharpness = sharpness;
-    c.edge_non_manifold = non_manifold;
 }
 
 /// The three groups of child vertices, in child index order.
@@ -313,9 +378,45 @@ fn groups(order: VertexOrder) -> [u8; 3] {
     }
 }
 
-/// Child vertex-faces, vertex-edges, non-manifold tags and sharpness
-/// (`populateVertexFacesFrom*`, `populateVertexEdgesFrom*`, `subdivideVertexSharpness`).
+/// Child vertex sharpness (`subdivideVertexSharpness`) and non-manifold tags.
 fn build_vertices(parent: &Level, r: &mut Refinement) {
+    let nv = parent.num_vertices();
+    let nf = parent.num_faces();
+    let ne = parent.num_edges();
+    let total = nv + nf + ne;
+    let mut sharpness = Vec::with_capacity(total);
+    let mut non_manifold = Vec::with_capacity(total);
+    for group in groups(r.order) {
+        match group {
+            0 => {
+                for v in 0..nv {
+                    let s = parent.vertex_sharpness(v);
+                    sharpness.push(if is_infinite(s) {
+                        SHARPNESS_INFINITE
+                    } else if is_semi_sharp(s) {
+                        subdivide_vertex_sharpness(s)
+                    } else {
+                        0.0
+                    });
+                }
+                non_manifold.extend_from_slice(&parent.vert_non_manifold);
+            }
+            1 => {
+                sharpness.resize(sharpness.len() + nf, 0.0);
+                non_manifold.resize(non_manifold.len() + nf, false);
+            }
+            _ => {
+                sharpness.resize(sharpness.len() + ne, 0.0);
+                non_manifold.extend_from_slice(&parent.edge_non_manifold);
+            }
+        }
+    }
+    r.child.vert_sharpness = sharpness;
+    r.child.vert_non_manifold = non_manifold;
+}
+
+/// Child vertex-faces and vertex-edges (`populateVertexFacesFrom*`, `populateVertexEdgesFrom*`).
+fn build_vertex_relations(parent: &Level, r: &mut Refinement) {
     let nv = parent.num_vertices();
     let nf = parent.num_faces();
     let ne = parent.num_edges();
@@ -329,8 +430,6 @@ fn build_vertices(parent: &Level, r: &mut Refinement) {
         total,
         nfv + parent.edge_faces.len() + 2 * ne + parent.vert_edges.len(),
     );
-    let mut sharpness = Vec::with_capacity(total);
-    let mut non_manifold = Vec::with_capacity(total);
     for group in groups(r.order) {
         match group {
             0 => {
@@ -355,15 +454,6 @@ fn build_vertices(parent: &Level, r: &mut Refinement) {
                         vedges.push(r.edge_child_edge(pe as usize, k as usize), 1);
                     }
                     vedges.end_row();
-                    let s = parent.vertex_sharpness(v);
-                    sharpness.push(if is_infinite(s) {
-                        SHARPNESS_INFINITE
-                    } else if is_semi_sharp(s) {
-                        subdivide_vertex_sharpness(s)
-                    } else {
-                        0.0
-                    });
-                    non_manifold.push(parent.is_vertex_non_manifold(v));
                 }
             }
             1 => {
@@ -380,15 +470,11 @@ fn build_vertices(parent: &Level, r: &mut Refinement) {
                         vedges.push((base + leading) as u32, 0);
                     }
                     vedges.end_row();
-                    sharpness.push(0.0);
-                    non_manifold.push(false);
                 }
             }
             _ => {
                 for e in 0..ne {
                     push_edge_vertex_rows(parent, r, e, &mut vfaces, &mut vedges);
-                    sharpness.push(0.0);
-                    non_manifold.push(parent.is_edge_non_manifold(e));
                 }
             }
         }
@@ -400,8 +486,6 @@ fn build_vertices(parent: &Level, r: &mut Refinement) {
     c.vert_edge_offsets = vedges.offsets;
     c.vert_edges = vedges.members;
     c.vert_edge_locals = vedges.locals;
-    c.vert_sharpness = sharpness;
-    c.vert_non_manifold = non_manifold;
 }
 
 /// Faces and edges around the child vertex of parent edge `e`

@@ -177,7 +177,7 @@ impl Level {
     }
 
     /// Rule of every vertex from its sharpness and the number of sharp incident edges.
-    pub(crate) fn update_vertex_rules(&mut self) {
+    fn update_vertex_rules(&mut self) {
         self.vert_rules = (0..self.num_vertices())
             .map(|v| {
                 let sharp = self

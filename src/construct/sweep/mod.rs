@@ -5,10 +5,12 @@
 //! - [`profile`]: the swept profile, its samples, scaling and morphing;
 //! - [`trajectory`]: the validated trajectory, its samples and their frames;
 //! - [`sweep`]: the sweep input (JSON) and its grid of data points;
-//! - [`revolve`]: surfaces of revolution (JSON input, poles, grid of data points).
+//! - [`revolve`]: surfaces of revolution (JSON input, poles, grid of data points);
+//! - [`mesh`]: quad mesh parts of a grid (shared caps and crease tagging).
 
 pub mod curve;
 pub mod frames;
+pub mod mesh;
 pub mod profile;
 pub mod revolve;
 #[allow(clippy::module_inception)]

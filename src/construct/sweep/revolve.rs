@@ -27,9 +27,12 @@ use glam::{DVec2, DVec3};
 use serde::Deserialize;
 
 use super::curve::{detect_corners, Joining, SpaceCurve};
+use super::mesh::grid_mesh;
 use super::profile::check_no_crossing;
 use super::sweep::{GridEnd, SweepGrid, MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
+use crate::construct::pole_cap::CapVertex;
 use crate::error::{Error, Result};
+use crate::mesh::MeshParts;
 
 /// A surface of revolution. See the module documentation for the JSON form and defaults.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -235,6 +238,26 @@ impl RevolveInput {
     /// of 4 with a smooth pole or odd with a tip, too few profile intervals to leave a ring
     /// between two poles.
     pub fn grid(&self, profile: &RevolvedProfile) -> Result<SweepGrid> {
+        Ok(self.rings(profile)?.0)
+    }
+
+    /// Quad mesh parts of the revolution, each vertex at its data point (the fitter's input):
+    /// the grid of [`RevolveInput::grid`] with its poles capped, cap vertices placed on the
+    /// surface by [`cap_point`].
+    pub fn mesh_parts(&self) -> Result<MeshParts> {
+        let profile = self.profile_curve()?;
+        let (grid, ring_s) = self.rings(&profile)?;
+        let [s0, s1] = profile.range();
+        let ring = [ring_s[0], ring_s[ring_s.len() - 1]];
+        let place = |end: usize, v: CapVertex| {
+            let pole = [s0, s1][end];
+            cap_point(&profile, ring[end], pole, v.radius, v.turn)
+        };
+        grid_mesh(&grid, &place)
+    }
+
+    /// The grid and the profile parameter of each ring.
+    fn rings(&self, profile: &RevolvedProfile) -> Result<(SweepGrid, Vec<f64>)> {
         let ends = [profile.end(0), profile.end(1)];
         let na = self.samples_around;
         for (which, e) in ends.iter().enumerate() {
@@ -294,7 +317,7 @@ impl RevolveInput {
                     .collect()
             })
             .collect();
-        Ok(SweepGrid {
+        let grid = SweepGrid {
             rings,
             ring_closed: closed,
             rings_closed: false,
@@ -302,7 +325,8 @@ impl RevolveInput {
             crease_columns: Vec::new(),
             flip: false,
             ends,
-        })
+        };
+        Ok((grid, samples.iter().map(|c| c.s).collect()))
     }
 }
 

@@ -29,9 +29,11 @@ use serde::Deserialize;
 
 use super::curve::Joining;
 use super::frames::FrameKind;
+use super::mesh::grid_mesh;
 use super::profile::SweptProfile;
 use super::trajectory::Trajectory;
 use crate::error::{Error, Result};
+use crate::mesh::MeshParts;
 
 /// Largest accepted sample interval count in one direction.
 pub const MAX_SAMPLES: usize = 4096;
@@ -223,6 +225,13 @@ impl SweepInput {
             flip: section.clockwise,
             ends: [GridEnd::Open; 2],
         })
+    }
+}
+
+impl SweepInput {
+    /// Quad mesh parts of the sweep, each vertex at its data point (the fitter's input).
+    pub fn mesh_parts(&self) -> Result<MeshParts> {
+        grid_mesh(&self.grid()?, &|_, _| DVec3::ZERO)
     }
 }
 

@@ -6,8 +6,10 @@
 //! - [`trajectory`]: the validated trajectory, its samples and their frames;
 //! - [`sweep`]: the sweep input (JSON) and its grid of data points;
 //! - [`revolve`]: surfaces of revolution (JSON input, poles, grid of data points);
-//! - [`mesh`]: quad mesh parts of a grid (shared caps and crease tagging).
+//! - [`mesh`]: quad mesh parts of a grid (shared caps and crease tagging);
+//! - [`build`]: the fitted constructions [`revolve`](build::revolve) and [`sweep`](build::sweep).
 
+pub mod build;
 pub mod curve;
 pub mod frames;
 pub mod mesh;
@@ -16,3 +18,5 @@ pub mod revolve;
 #[allow(clippy::module_inception)]
 pub mod sweep;
 pub mod trajectory;
+
+pub use build::{revolve, sweep, SweptSurface};

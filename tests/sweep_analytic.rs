@@ -2,9 +2,8 @@
 //! surface, at dense samples of every face (caps included), is below 1e-3 of the surface's
 //! size at 16 × 32 samples and falls at least 4× per doubling of both counts.
 //!
-//! Dense limit samples: the fitted mesh refined uniformly twice, then the exact limit position
-//! of every refined vertex (limit stencils): 25 limit points per control face, at parameters
-//! (i/4, j/4).
+//! Dense limit samples: the exact evaluator at (face, u, v) = (f, i/4, j/4) for i, j in
+//! 0..=4 (25 points per control face, caps included).
 //!
 //! The input curves are sampled densely (64+ points) so that their spline interpolation
 //! error stays far below the surface error being measured.

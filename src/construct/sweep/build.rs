@@ -4,13 +4,10 @@ use glam::DVec3;
 
 use super::revolve::RevolveInput;
 use super::sweep::SweepInput;
+use crate::construct::profile::mesh_options;
 use crate::error::Result;
-use crate::eval::limit_stencils;
-use crate::fit::{solve, CsrRef, FitReport};
+use crate::fit::{fit_limit, FitReport};
 use crate::mesh::{Mesh, MeshParts};
-
-/// Fit tolerance relative to the bounding-box diagonal of the data points.
-pub const FIT_TOLERANCE: f64 = 1e-10;
 
 /// A fitted control mesh and the data point its limit surface passes through at each vertex.
 #[derive(Debug, Clone, PartialEq)]
@@ -23,25 +20,15 @@ pub struct SweptSurface {
     pub fit: FitReport,
 }
 
-/// Move the vertices of `parts` (each at its data point) so that the exact limit surface
-/// interpolates the data points, to [`FIT_TOLERANCE`] × the data's bounding-box diagonal.
-pub fn fit_parts(parts: MeshParts) -> Result<SweptSurface> {
-    let mesh = Mesh::from_parts(parts)?;
-    let targets = mesh.positions().to_vec();
-    let table = limit_stencils(&mesh, &mesh.options().resolve())?;
-    let a = CsrRef {
-        offsets: &table.offsets,
-        indices: &table.indices,
-        weights: &table.weights,
-    };
-    let (positions, fit) = solve(a, &targets, FIT_TOLERANCE * mesh.bounding_box_diagonal())?;
-    let mut parts = mesh.into_parts();
-    parts.positions = positions;
-    Ok(SweptSurface {
-        mesh: Mesh::from_parts(parts)?,
-        targets,
-        fit,
-    })
+/// Fit `parts` (each vertex at its data point, no option tags yet) with the profile
+/// pipeline's fitter and options ([`mesh_options`]): the exact limit surface then passes
+/// through every data point, to [`crate::fit::RELATIVE_TOLERANCE`] × their diagonal.
+pub fn fit_parts(mut parts: MeshParts) -> Result<SweptSurface> {
+    parts.options = mesh_options();
+    let cage = Mesh::from_parts(parts)?;
+    let targets = cage.positions().to_vec();
+    let (mesh, fit) = fit_limit(&cage, &mesh_options().resolve(), &targets)?;
+    Ok(SweptSurface { mesh, targets, fit })
 }
 
 /// The surface of revolution of `input`, fitted. Errors: those of [`RevolveInput::mesh_parts`]

@@ -5,22 +5,13 @@
 //! profile curves of [`crate::curves`] cover neither, so this module adds the two cases with
 //! the same conventions (chord-length knots, natural ends at breaks, Hermite spans). A closed
 //! curve without corners is a *periodic* spline (cyclic tridiagonal system); a closed curve
-//! with corners is a chain of runs from corner to corner. Planar profiles use `z = 0`.
+//! with corners is a chain of runs from corner to corner. Planar profiles use `z = 0`. The
+//! choice of spline or polyline is the profile pipeline's [`Interpolation`].
 
 use glam::DVec3;
 
+pub use crate::curves::Interpolation;
 use crate::error::{Error, Result};
-
-/// How the points are joined (JSON `"spline"` or `"polyline"`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Joining {
-    /// C² cubic spline with chord-length parameter, broken (C⁰) at corners. The default.
-    #[default]
-    Spline,
-    /// Straight segments: the points taken literally (every point is then a potential corner).
-    Polyline,
-}
 
 /// A curve through points, parameterized by summed chord length.
 #[derive(Debug, Clone, PartialEq)]
@@ -58,7 +49,7 @@ impl SpaceCurve {
         what: &str,
         points: &[DVec3],
         closed: bool,
-        joining: Joining,
+        interpolation: Interpolation,
         corners: &[usize],
     ) -> Result<SpaceCurve> {
         let n = points.len();
@@ -104,7 +95,7 @@ impl SpaceCurve {
                 if closed { "a" } else { "an interior" }
             )));
         }
-        if joining == Joining::Polyline {
+        if interpolation == Interpolation::Polyline {
             // Every point where the direction changes is a corner.
             corners = (0..n)
                 .filter(|&i| {
@@ -112,14 +103,14 @@ impl SpaceCurve {
                 })
                 .collect();
         }
-        let tangents = match joining {
-            Joining::Polyline => (0..spans)
+        let tangents = match interpolation {
+            Interpolation::Polyline => (0..spans)
                 .map(|i| {
                     let d = (points[(i + 1) % n] - points[i]) / (knots[i + 1] - knots[i]);
                     [d, d]
                 })
                 .collect(),
-            Joining::Spline => spline_tangents(points, &knots, closed, &corners),
+            Interpolation::Spline => spline_tangents(points, &knots, closed, &corners),
         };
         Ok(SpaceCurve {
             points: points.to_vec(),
@@ -458,7 +449,7 @@ mod tests {
     #[test]
     fn periodic_spline_is_c2_at_every_point_and_near_a_circle() {
         let pts = circle(12, 2.0);
-        let c = SpaceCurve::new("t", &pts, true, Joining::Spline, &[]).unwrap();
+        let c = SpaceCurve::new("t", &pts, true, Interpolation::Spline, &[]).unwrap();
         assert!(c.corners().is_empty());
         for (i, k) in c.knots()[..12].iter().enumerate() {
             let (l, r) = (c.eval(*k, true), c.eval(*k, false));
@@ -474,7 +465,8 @@ mod tests {
         assert!((end.d1 - start.d1).length() < 1e-12);
         // Fourth-order convergence to the circle.
         let dev = |n: usize| {
-            let c = SpaceCurve::new("t", &circle(n, 2.0), true, Joining::Spline, &[]).unwrap();
+            let c =
+                SpaceCurve::new("t", &circle(n, 2.0), true, Interpolation::Spline, &[]).unwrap();
             (0..400)
                 .map(|k| {
                     (c.eval(c.length() * k as f64 / 400.0, false)
@@ -499,11 +491,11 @@ mod tests {
         ];
         let corners = detect_corners(&sq, true, 30f64.to_radians());
         assert_eq!(corners, vec![0, 1, 2, 3]);
-        let c = SpaceCurve::new("sq", &sq, true, Joining::Spline, &corners).unwrap();
+        let c = SpaceCurve::new("sq", &sq, true, Interpolation::Spline, &corners).unwrap();
         // Runs of one span with natural ends are straight lines.
         let mid = c.eval(2.5, false).position;
         assert!((mid - DVec3::new(0.5, 1.0, 0.0)).length() < 1e-14);
-        let p = SpaceCurve::new("sq", &sq, true, Joining::Polyline, &[]).unwrap();
+        let p = SpaceCurve::new("sq", &sq, true, Interpolation::Polyline, &[]).unwrap();
         assert_eq!(p.corners(), &[0, 1, 2, 3]);
         assert!((p.eval(3.25, false).position - DVec3::new(0.0, 0.75, 0.0)).length() < 1e-14);
         // The incoming and outgoing derivative differ at a corner.
@@ -519,7 +511,7 @@ mod tests {
             DVec3::new(1.5, 3.0, 3.0),
             DVec3::new(4.0, 8.0, 8.0),
         ];
-        let c = SpaceCurve::new("l", &pts, false, Joining::Spline, &[]).unwrap();
+        let c = SpaceCurve::new("l", &pts, false, Interpolation::Spline, &[]).unwrap();
         for k in 0..=20 {
             let s = c.length() * k as f64 / 20.0;
             let p = c.eval(s, false);
@@ -536,7 +528,7 @@ mod tests {
             DVec3::new(3.0, 0.0, 0.0),
             DVec3::new(3.0, 1.0, 0.0),
         ];
-        let c = SpaceCurve::new("l", &pts, false, Joining::Polyline, &[]).unwrap();
+        let c = SpaceCurve::new("l", &pts, false, Interpolation::Polyline, &[]).unwrap();
         let s = c.sample_parameters("l", 8).unwrap();
         let params: Vec<f64> = s.iter().map(|x| x.s).collect();
         assert_eq!(params, vec![0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0]);
@@ -548,7 +540,7 @@ mod tests {
         assert!(c.sample_parameters("l", 1).is_err());
         // Closed square, corners everywhere: 3 intervals per side at 12.
         let sq = [DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
-        let c = SpaceCurve::new("sq", &sq, true, Joining::Polyline, &[]).unwrap();
+        let c = SpaceCurve::new("sq", &sq, true, Interpolation::Polyline, &[]).unwrap();
         let s = c.sample_parameters("sq", 12).unwrap();
         assert_eq!(s.len(), 12);
         assert_eq!(s.iter().filter(|x| x.corner).count(), 4);
@@ -561,20 +553,20 @@ mod tests {
     #[test]
     fn rejects_bad_points() {
         let one = [DVec3::ZERO];
-        let e = SpaceCurve::new("trajectory", &one, false, Joining::Spline, &[]).unwrap_err();
+        let e = SpaceCurve::new("trajectory", &one, false, Interpolation::Spline, &[]).unwrap_err();
         assert!(matches!(e, Error::InvalidArgument(m) if m.contains("at least 2")));
         let two = [DVec3::ZERO, DVec3::ONE];
-        assert!(SpaceCurve::new("t", &two, true, Joining::Spline, &[]).is_err());
+        assert!(SpaceCurve::new("t", &two, true, Interpolation::Spline, &[]).is_err());
         let nan = [DVec3::ZERO, DVec3::new(f64::NAN, 0.0, 0.0)];
-        assert!(SpaceCurve::new("t", &nan, false, Joining::Spline, &[]).is_err());
+        assert!(SpaceCurve::new("t", &nan, false, Interpolation::Spline, &[]).is_err());
         let dup = [DVec3::ZERO, DVec3::X, DVec3::X];
-        let e = SpaceCurve::new("t", &dup, false, Joining::Spline, &[]).unwrap_err();
+        let e = SpaceCurve::new("t", &dup, false, Interpolation::Spline, &[]).unwrap_err();
         assert!(matches!(e, Error::InvalidArgument(m) if m.contains("points 1 and 2 coincide")));
         let wrap = [DVec3::ZERO, DVec3::X, DVec3::Y, DVec3::ZERO];
-        let e = SpaceCurve::new("t", &wrap, true, Joining::Spline, &[]).unwrap_err();
+        let e = SpaceCurve::new("t", &wrap, true, Interpolation::Spline, &[]).unwrap_err();
         assert!(matches!(e, Error::InvalidArgument(m) if m.contains("points 3 and 0 coincide")));
         let pts = [DVec3::ZERO, DVec3::X, DVec3::Y];
-        assert!(SpaceCurve::new("t", &pts, false, Joining::Spline, &[0]).is_err());
-        assert!(SpaceCurve::new("t", &pts, true, Joining::Spline, &[0]).is_ok());
+        assert!(SpaceCurve::new("t", &pts, false, Interpolation::Spline, &[0]).is_err());
+        assert!(SpaceCurve::new("t", &pts, true, Interpolation::Spline, &[0]).is_ok());
     }
 }

@@ -73,19 +73,11 @@ pub fn grid_mesh(
 mod tests {
     use super::*;
     use crate::construct::sweep::revolve::RevolveInput;
+    use crate::construct::sweep::sweep::tests::circle2;
     use crate::construct::sweep::sweep::SweepInput;
     use crate::mesh::validate::check;
     use crate::mesh::Mesh;
     use std::f64::consts::TAU;
-
-    fn circle2(n: usize, r: f64) -> Vec<[f64; 2]> {
-        (0..n)
-            .map(|i| {
-                let t = TAU * i as f64 / n as f64;
-                [r * t.cos(), r * t.sin()]
-            })
-            .collect()
-    }
 
     fn revolve_mesh(input: &RevolveInput) -> Mesh {
         Mesh::from_parts(input.mesh_parts().unwrap()).unwrap()

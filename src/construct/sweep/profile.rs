@@ -3,7 +3,7 @@
 
 use glam::{DVec2, DVec3};
 
-use super::curve::{detect_corners, Joining, SpaceCurve};
+use super::curve::{detect_corners, Interpolation, SpaceCurve};
 use crate::error::{Error, Result};
 
 /// A validated profile (and its optional end profile).
@@ -53,12 +53,12 @@ impl SweptProfile {
         points: &[[f64; 2]],
         end: Option<&[[f64; 2]]>,
         closed: bool,
-        joining: Joining,
+        interpolation: Interpolation,
         sharp_angle: f64,
     ) -> Result<SweptProfile> {
         let start = lift(points);
         // Validate before looking at angles and crossings.
-        SpaceCurve::new("profile", &start, closed, Joining::Polyline, &[])?;
+        SpaceCurve::new("profile", &start, closed, Interpolation::Polyline, &[])?;
         check_no_crossing("profile", points, closed)?;
         let mut corners = detect_corners(&start, closed, sharp_angle);
         let end = match end {
@@ -72,19 +72,19 @@ impl SweptProfile {
                     )));
                 }
                 let e3 = lift(e);
-                SpaceCurve::new("profile_end", &e3, closed, Joining::Polyline, &[])?;
+                SpaceCurve::new("profile_end", &e3, closed, Interpolation::Polyline, &[])?;
                 check_no_crossing("profile_end", e, closed)?;
                 corners.extend(detect_corners(&e3, closed, sharp_angle));
                 Some(e3)
             }
         };
-        let start = SpaceCurve::new("profile", &start, closed, joining, &corners)?;
+        let start = SpaceCurve::new("profile", &start, closed, interpolation, &corners)?;
         let end = match end {
             Some(e) => Some(SpaceCurve::new(
                 "profile_end",
                 &e,
                 closed,
-                joining,
+                interpolation,
                 start.corners(),
             )?),
             None => None,
@@ -179,13 +179,13 @@ mod tests {
 
     #[test]
     fn square_profile_samples_have_four_corners_and_orientation() {
-        let p = SweptProfile::new(&SQUARE, None, true, Joining::Spline, 0.5).unwrap();
+        let p = SweptProfile::new(&SQUARE, None, true, Interpolation::Spline, 0.5).unwrap();
         let s = p.sample(8).unwrap();
         assert_eq!(s.corners, vec![0, 2, 4, 6]);
         assert!(!s.clockwise);
         assert_eq!(s.start[1], DVec2::new(0.0, -1.0));
         let rev: Vec<[f64; 2]> = SQUARE.iter().rev().copied().collect();
-        let s = SweptProfile::new(&rev, None, true, Joining::Spline, 0.5)
+        let s = SweptProfile::new(&rev, None, true, Interpolation::Spline, 0.5)
             .unwrap()
             .sample(8)
             .unwrap();
@@ -195,21 +195,21 @@ mod tests {
     #[test]
     fn morph_and_scale_interpolate_between_profiles() {
         let big: Vec<[f64; 2]> = SQUARE.iter().map(|p| [3.0 * p[0], 2.0 * p[1]]).collect();
-        let p = SweptProfile::new(&SQUARE, Some(&big), true, Joining::Spline, 0.5).unwrap();
+        let p = SweptProfile::new(&SQUARE, Some(&big), true, Interpolation::Spline, 0.5).unwrap();
         let s = p.sample(8).unwrap();
         assert_eq!(s.end[1], DVec2::new(0.0, -2.0));
         assert_eq!(s.end[2], DVec2::new(3.0, -2.0));
         let half: Vec<DVec2> = s.at(0.5, 2.0).collect();
         assert_eq!(half[2], DVec2::new(4.0, -3.0));
-        let e =
-            SweptProfile::new(&SQUARE, Some(&big[..3]), true, Joining::Spline, 0.5).unwrap_err();
+        let e = SweptProfile::new(&SQUARE, Some(&big[..3]), true, Interpolation::Spline, 0.5)
+            .unwrap_err();
         assert!(matches!(e, Error::InvalidArgument(m) if m.contains("as many")));
     }
 
     #[test]
     fn crossing_profiles_are_refused() {
         let bow = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
-        let e = SweptProfile::new(&bow, None, true, Joining::Spline, 0.5).unwrap_err();
+        let e = SweptProfile::new(&bow, None, true, Interpolation::Spline, 0.5).unwrap_err();
         assert!(
             matches!(e, Error::InvalidArgument(m) if m.contains("crosses itself: segment 0-1 meets segment 2-3"))
         );
@@ -218,11 +218,11 @@ mod tests {
             &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0]],
             None,
             true,
-            Joining::Spline,
+            Interpolation::Spline,
             0.5
         )
         .is_ok());
         let touch = [[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [1.0, 0.0], [1.0, -1.0]];
-        assert!(SweptProfile::new(&touch, None, false, Joining::Spline, 0.5).is_err());
+        assert!(SweptProfile::new(&touch, None, false, Interpolation::Spline, 0.5).is_err());
     }
 }

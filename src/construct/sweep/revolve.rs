@@ -26,11 +26,12 @@ use std::path::Path;
 use glam::{DVec2, DVec3};
 use serde::Deserialize;
 
-use super::curve::{detect_corners, Joining, SpaceCurve};
+use super::curve::{detect_corners, Interpolation, SpaceCurve};
 use super::mesh::grid_mesh;
 use super::profile::check_no_crossing;
-use super::sweep::{GridEnd, SweepGrid, MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
+use super::sweep::{sample_counts_ok, GridEnd, SweepGrid};
 use crate::construct::pole_cap::CapVertex;
+use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
 use crate::error::{Error, Result};
 use crate::mesh::MeshParts;
 
@@ -51,7 +52,7 @@ pub struct RevolveInput {
     pub samples_around: usize,
     /// How the points are joined. Default spline.
     #[serde(default)]
-    pub interpolation: Joining,
+    pub interpolation: Interpolation,
     /// Turning angle (degrees) above which a point is a corner. Default 30.
     #[serde(default = "default_sharp_angle")]
     pub sharp_angle_deg: f64,
@@ -84,9 +85,13 @@ impl RevolvedProfile {
     /// Validate and interpolate the profile. Errors ([`Error::InvalidArgument`]): those of
     /// [`SpaceCurve::new`], a negative `r` (the profile crosses the axis), an interior point on
     /// the axis, a profile that crosses itself, both ends on the axis at the same point.
-    pub fn new(points: &[[f64; 2]], joining: Joining, sharp_angle: f64) -> Result<RevolvedProfile> {
+    pub fn new(
+        points: &[[f64; 2]],
+        interpolation: Interpolation,
+        sharp_angle: f64,
+    ) -> Result<RevolvedProfile> {
         let lifted: Vec<DVec3> = points.iter().map(|p| DVec3::new(p[0], p[1], 0.0)).collect();
-        SpaceCurve::new("profile", &lifted, false, Joining::Polyline, &[])?;
+        SpaceCurve::new("profile", &lifted, false, Interpolation::Polyline, &[])?;
         if let Some(i) = points.iter().position(|p| p[0] < 0.0) {
             return Err(Error::invalid_argument(format!(
                 "profile point {i} has r = {} < 0: the profile crosses the axis",
@@ -125,7 +130,7 @@ impl RevolvedProfile {
             }
         }
         let corners = detect_corners(&all, closed, sharp_angle);
-        let curve = SpaceCurve::new("profile", &all, closed, joining, &corners)?;
+        let curve = SpaceCurve::new("profile", &all, closed, interpolation, &corners)?;
         let range = [curve.knots()[first], curve.knots()[first + n - 1]];
         Ok(RevolvedProfile {
             curve,
@@ -176,7 +181,7 @@ impl RevolveInput {
             angle_deg: default_angle(),
             samples_profile: default_samples_profile(),
             samples_around: default_samples_around(),
-            interpolation: Joining::default(),
+            interpolation: Interpolation::default(),
             sharp_angle_deg: default_sharp_angle(),
         }
     }
@@ -197,10 +202,7 @@ impl RevolveInput {
 
     fn check_settings(&self) -> Result<()> {
         let (np, na) = (self.samples_profile, self.samples_around);
-        if !(1..=MAX_SAMPLES).contains(&np)
-            || !(3..=MAX_SAMPLES).contains(&na)
-            || np * na > MAX_SAMPLE_PRODUCT
-        {
+        if !sample_counts_ok(na, np, 3) {
             return Err(Error::invalid_argument(format!(
                 "samples_profile = {np} and samples_around = {na}: samples_profile must be \
                  1..={MAX_SAMPLES}, samples_around 3..={MAX_SAMPLES}, their product at most \

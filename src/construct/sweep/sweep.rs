@@ -27,18 +27,14 @@ use std::path::Path;
 use glam::DVec3;
 use serde::Deserialize;
 
-use super::curve::Joining;
+use super::curve::Interpolation;
 use super::frames::FrameKind;
 use super::mesh::grid_mesh;
 use super::profile::SweptProfile;
 use super::trajectory::Trajectory;
+use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
 use crate::error::{Error, Result};
 use crate::mesh::MeshParts;
-
-/// Largest accepted sample interval count in one direction.
-pub const MAX_SAMPLES: usize = 4096;
-/// Largest accepted product of the two sample counts.
-pub const MAX_SAMPLE_PRODUCT: usize = 4_000_000;
 
 /// A sweep: profile, trajectory, frame and sampling. See the module documentation for the
 /// JSON form and the defaults.
@@ -72,7 +68,7 @@ pub struct SweepInput {
     pub profile_end: Option<Vec<[f64; 2]>>,
     /// How the points of both curves are joined. Default spline.
     #[serde(default)]
-    pub interpolation: Joining,
+    pub interpolation: Interpolation,
     /// Turning angle (degrees) above which a point is a corner. Default 30.
     #[serde(default = "default_sharp_angle")]
     pub sharp_angle_deg: f64,
@@ -89,6 +85,15 @@ fn default_scale() -> [f64; 2] {
 }
 fn default_sharp_angle() -> f64 {
     30.0
+}
+
+/// Whether sample interval counts `a` (at least `min_a`) and `b` (at least 1) are within the
+/// limits the profile construction accepts.
+pub(super) fn sample_counts_ok(a: usize, b: usize, min_a: usize) -> bool {
+    let max = MAX_SAMPLES as usize;
+    (min_a..=max).contains(&a)
+        && (1..=max).contains(&b)
+        && (a as u64) * (b as u64) <= MAX_SAMPLE_PRODUCT
 }
 
 /// How the first or last ring of a grid is finished.
@@ -134,7 +139,7 @@ impl SweepInput {
             samples_trajectory: default_samples_trajectory(),
             scale: default_scale(),
             profile_end: None,
-            interpolation: Joining::default(),
+            interpolation: Interpolation::default(),
             sharp_angle_deg: default_sharp_angle(),
         }
     }
@@ -150,10 +155,7 @@ impl SweepInput {
 
     fn check_settings(&self) -> Result<()> {
         let (np, nt) = (self.samples_profile, self.samples_trajectory);
-        if !(1..=MAX_SAMPLES).contains(&np)
-            || !(1..=MAX_SAMPLES).contains(&nt)
-            || np * nt > MAX_SAMPLE_PRODUCT
-        {
+        if !sample_counts_ok(np, nt, 1) {
             return Err(Error::invalid_argument(format!(
                 "samples_profile = {np} and samples_trajectory = {nt}: each must be 1..={MAX_SAMPLES} \
                  and their product at most {MAX_SAMPLE_PRODUCT}"
@@ -236,11 +238,12 @@ impl SweepInput {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use std::f64::consts::TAU;
 
-    fn circle2(n: usize, r: f64) -> Vec<[f64; 2]> {
+    /// `n` points on the circle of radius `r` about the origin, counter-clockwise.
+    pub(in crate::construct::sweep) fn circle2(n: usize, r: f64) -> Vec<[f64; 2]> {
         (0..n)
             .map(|i| {
                 let t = TAU * i as f64 / n as f64;
@@ -363,7 +366,7 @@ mod tests {
         )
         .unwrap();
         assert_eq!(i.frame, FrameKind::Frenet);
-        assert_eq!(i.interpolation, Joining::Polyline);
+        assert_eq!(i.interpolation, Interpolation::Polyline);
         let msg = |f: &dyn Fn(&mut SweepInput)| {
             let mut i = SweepInput::new(
                 vec![[0.0, 0.0], [1.0, 0.0]],

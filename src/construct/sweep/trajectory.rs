@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-use super::curve::{detect_corners, CurveSample, Joining, SpaceCurve};
+use super::curve::{detect_corners, CurveSample, Interpolation, SpaceCurve};
 use super::frames::{compute_frames, Frame, FrameKind, FramePoint};
 use crate::error::{Error, Result};
 
@@ -40,17 +40,17 @@ impl Trajectory {
     pub fn new(
         points: &[DVec3],
         closed: bool,
-        joining: Joining,
+        interpolation: Interpolation,
         sharp_angle: f64,
         corners: &[usize],
     ) -> Result<Trajectory> {
         if points.len() >= 2 {
             // Validate before detecting corners, which needs distinct finite points.
-            SpaceCurve::new("trajectory", points, closed, Joining::Polyline, &[])?;
+            SpaceCurve::new("trajectory", points, closed, Interpolation::Polyline, &[])?;
         }
         let mut all = detect_corners(points, closed, sharp_angle);
         all.extend_from_slice(corners);
-        let curve = SpaceCurve::new("trajectory", points, closed, joining, &all)?;
+        let curve = SpaceCurve::new("trajectory", points, closed, interpolation, &all)?;
         for &c in curve.corners() {
             let s = curve.knots()[c];
             let (a, b) = (curve.eval(s, true).d1, curve.eval(s, false).d1);
@@ -136,7 +136,7 @@ mod tests {
                 DVec3::new(t.cos(), t.sin(), 0.1 * t)
             })
             .collect();
-        let tr = Trajectory::new(&pts, false, Joining::Spline, sharp(), &[]).unwrap();
+        let tr = Trajectory::new(&pts, false, Interpolation::Spline, sharp(), &[]).unwrap();
         let s = tr.samples(16, FrameKind::RotationMinimizing).unwrap();
         assert_eq!(s.len(), 17);
         assert_eq!(s[0].fraction, 0.0);
@@ -157,7 +157,7 @@ mod tests {
             DVec3::new(2.0, 0.0, 0.0),
             DVec3::new(2.0, 2.0, 0.0),
         ];
-        let tr = Trajectory::new(&pts, false, Joining::Spline, sharp(), &[]).unwrap();
+        let tr = Trajectory::new(&pts, false, Interpolation::Spline, sharp(), &[]).unwrap();
         assert_eq!(tr.curve().corners(), &[1]);
         let s = tr.samples(8, FrameKind::RotationMinimizing).unwrap();
         let corners: Vec<usize> = (0..s.len()).filter(|&i| s[i].corner).collect();
@@ -173,7 +173,7 @@ mod tests {
         let msg = |pts: &[DVec3], closed| match Trajectory::new(
             pts,
             closed,
-            Joining::Spline,
+            Interpolation::Spline,
             sharp(),
             &[],
         ) {
@@ -187,7 +187,7 @@ mod tests {
         assert!(msg(&[DVec3::ZERO, DVec3::X, DVec3::ZERO], false).contains("turns back"));
         assert!(msg(&[DVec3::ZERO, DVec3::X * 2.0, DVec3::X], false).contains("turns back"));
         let line = [DVec3::ZERO, DVec3::X, DVec3::X * 2.0];
-        let tr = Trajectory::new(&line, false, Joining::Spline, sharp(), &[]).unwrap();
+        let tr = Trajectory::new(&line, false, Interpolation::Spline, sharp(), &[]).unwrap();
         let e = tr.samples(4, FrameKind::Frenet).unwrap_err();
         assert!(matches!(e, Error::InvalidArgument(m) if m.contains("undefined everywhere")));
         assert!(tr.samples(4, FrameKind::RotationMinimizing).is_ok());

@@ -13,6 +13,8 @@ pub mod convert;
 pub mod limit;
 pub mod profile;
 pub mod refine;
+pub mod revolve;
+pub mod sweep;
 
 use std::ffi::OsString;
 
@@ -84,6 +86,22 @@ pub enum Command {
     /// (pointed), creases rings at corners, and fits the control points so that the exact
     /// limit surface passes through every data point. Without INPUT: a built-in bottle.
     Profile(profile::ProfileArgs),
+    /// Build a surface of revolution: a profile (r, z) turned about the z axis.
+    ///
+    /// Reads the profile from JSON (bottom to top, r >= 0; angle_deg, samples_profile,
+    /// samples_around, interpolation, sharp_angle_deg), closes ends on the axis with quad
+    /// caps (smooth) or a corner tip (pointed), creases rings at profile corners, and fits
+    /// the control points so that the exact limit surface passes through every data point.
+    Revolve(revolve::RevolveArgs),
+    /// Sweep a planar profile along a 3-D trajectory with a fixed, Frenet or
+    /// rotation-minimizing frame.
+    ///
+    /// Reads profile and trajectory from JSON (closed_profile, closed_trajectory, frame,
+    /// samples_profile, samples_trajectory, scale, profile_end, interpolation,
+    /// sharp_angle_deg), creases profile corners along the sweep and trajectory corners
+    /// across it (mitered), and fits the control points so that the exact limit surface
+    /// passes through every data point.
+    Sweep(sweep::SweepArgs),
 }
 
 /// Subdivision option flags. Given on the command line they override the tags of the mesh
@@ -191,6 +209,8 @@ pub fn dispatch(command: &Command) -> Result<i32> {
         Command::Refine(args) => refine::run(args),
         Command::Limit(args) => limit::run(args),
         Command::Profile(args) => profile::run(args),
+        Command::Revolve(args) => revolve::run(args),
+        Command::Sweep(args) => sweep::run(args),
     }
 }
 

@@ -1,0 +1,160 @@
+//! The bundled sweep examples (`examples/sweeps/`): each regenerates to its checked-in OBJ,
+//! has the promised topology and crease structure, and the CLI writes the same mesh plus one
+//! target line per vertex; bad input writes nothing.
+
+#[path = "support/mesh_compare.rs"]
+mod mesh_compare;
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use mesh_compare::assert_same;
+use profsubd::construct::sweep::revolve::RevolveInput;
+use profsubd::construct::sweep::sweep::SweepInput;
+use profsubd::construct::sweep::{revolve, sweep, SweptSurface};
+use profsubd::io::obj::read_obj_file;
+use profsubd::mesh::validate::check;
+
+fn example(name: &str, ext: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("examples/sweeps")
+        .join(format!("{name}.{ext}"))
+}
+
+fn profsubd(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_profsubd"))
+        .args(args)
+        .output()
+        .expect("run profsubd")
+}
+
+fn build(name: &str) -> SweptSurface {
+    let path = example(name, "json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    if name == "wine_glass" {
+        revolve(&RevolveInput::from_json(&text, &path).unwrap()).unwrap()
+    } else {
+        sweep(&SweepInput::from_json(&text, &path).unwrap()).unwrap()
+    }
+}
+
+/// Vertices with `k` crease edges, for k = 1, 2, 3...
+fn crease_degrees(s: &SweptSurface) -> Vec<usize> {
+    let mut degree = vec![0usize; s.mesh.num_vertices()];
+    for c in s.mesh.creases() {
+        for v in c.vertices {
+            degree[v as usize] += 1;
+        }
+    }
+    (1..=4)
+        .map(|k| degree.iter().filter(|&&d| d == k).count())
+        .collect()
+}
+
+#[test]
+fn examples_regenerate_with_their_topology() {
+    for name in ["wine_glass", "torus_knot_tube", "handrail"] {
+        let s = build(name);
+        let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
+        assert_same(&s.mesh, &stored, name);
+        assert!(s.fit.residual <= 1e-10 * s.mesh.bounding_box_diagonal());
+        assert!(s.mesh.face_sizes().iter().all(|&n| n == 4));
+        let r = check(&s.mesh);
+        assert!(r.is_manifold() && r.is_consistently_oriented(), "{name}");
+        match name {
+            // A closed glass (outer wall, rim, inner bowl) with smooth poles at the foot and
+            // at the bottom of the bowl: a sphere; 32 meridians, creases on whole rings.
+            "wine_glass" => {
+                assert!(r.is_closed());
+                assert_eq!(r.euler_characteristic, 2);
+                assert_eq!(r.valences.keys().copied().collect::<Vec<_>>(), vec![3, 4]);
+                assert_eq!(s.mesh.creases().len() % 32, 0);
+                assert_eq!(crease_degrees(&s), vec![0, s.mesh.creases().len(), 0, 0]);
+            }
+            // A closed tube: a torus, all regular, no creases.
+            "torus_knot_tube" => {
+                assert!(r.is_closed());
+                assert_eq!(r.euler_characteristic, 0);
+                assert_eq!(r.valences.keys().copied().collect::<Vec<_>>(), vec![4]);
+                assert!(s.mesh.creases().is_empty());
+            }
+            // An open square tube: 4 crease lines along it (49 rings) and 2 crease rings of 8
+            // edges at the two trajectory corners; where they cross, 4 crease edges meet.
+            "handrail" => {
+                assert_eq!(r.num_boundary_loops, 2);
+                assert_eq!(s.mesh.creases().len(), 4 * 48 + 2 * 8);
+                assert_eq!(crease_degrees(&s)[3], 8);
+            }
+            _ => unreachable!(),
+        }
+    }
+}
+
+#[test]
+fn cli_writes_the_mesh_and_targets_and_nothing_on_error() {
+    let dir = tempfile::tempdir().unwrap();
+    for (cmd, name) in [("revolve", "wine_glass"), ("sweep", "handrail")] {
+        let obj = dir.path().join(format!("{name}.obj"));
+        let targets = dir.path().join(format!("{name}.txt"));
+        let out = profsubd(&[
+            cmd,
+            example(name, "json").to_str().unwrap(),
+            "-o",
+            obj.to_str().unwrap(),
+            "--targets",
+            targets.to_str().unwrap(),
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let s = build(name);
+        assert_same(&read_obj_file(&obj).unwrap().mesh, &s.mesh, name);
+        let lines: Vec<String> = std::fs::read_to_string(&targets)
+            .unwrap()
+            .lines()
+            .map(String::from)
+            .collect();
+        assert_eq!(lines.len(), s.mesh.num_vertices());
+        let first: Vec<f64> = lines[0].split(' ').map(|x| x.parse().unwrap()).collect();
+        assert_eq!(first, vec![s.targets[0].x, s.targets[0].y, s.targets[0].z]);
+    }
+    // Bad input: the message names the culprit, exit code 1, no file written.
+    let bad = dir.path().join("bad.json");
+    let obj = dir.path().join("bad.obj");
+    for (cmd, json, expect) in [
+        (
+            "revolve",
+            r#"{"profile": [[1, 0], [-1, 1]]}"#,
+            "crosses the axis",
+        ),
+        (
+            "sweep",
+            r#"{"profile": [[0, 0], [1, 0]], "trajectory": [[0, 0, 0], [0, 0, 0]]}"#,
+            "coincide",
+        ),
+        (
+            "sweep",
+            r#"{"profile": [[0, 0], [1, 0]], "trajectory": [[0, 0, 0], [0, 0, 1]], "frame": "frenet"}"#,
+            "undefined everywhere",
+        ),
+        (
+            "sweep",
+            r#"{"profile": [[0,0],[1,1],[1,0],[0,1]], "closed_profile": true, "trajectory": [[0,0,0],[0,0,1]]}"#,
+            "crosses itself",
+        ),
+        (
+            "sweep",
+            r#"{"profile": [[0, 0], [1, 0]], "trajectory": [[0, 0, 0], [0, 0, 1]], "twist": 1}"#,
+            "unknown field `twist`",
+        ),
+    ] {
+        std::fs::write(&bad, json).unwrap();
+        let out = profsubd(&[cmd, bad.to_str().unwrap(), "-o", obj.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(1));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(expect), "{cmd} {json}: {err}");
+        assert!(!obj.exists());
+    }
+}

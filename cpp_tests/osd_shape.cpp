@@ -43,6 +43,12 @@ bool to_double(const std::string &s, double *v) {
     return end != s.c_str() && *end == '\0' && errno == 0;
 }
 
+// Statements with no vertex data that need no mention.
+bool is_silent_statement(const std::string &keyword) {
+    static const char *const kNames[] = {"vt", "vn", "g", "o", "s", "usemtl", "mtllib"};
+    return std::find(std::begin(kNames), std::end(kNames), keyword) != std::end(kNames);
+}
+
 bool fail(std::string *error, int line, const std::string &what) {
     if (error != nullptr) {
         *error = "line " + std::to_string(line) + ": " + what;
@@ -105,9 +111,32 @@ float tag_sharpness(const OsdTag &t, std::size_t item) {
     return std::max(0.0f, s);
 }
 
-// Applies the tags that carry topology or options (far_utils.h semantics).
+bool is_vertex_tag(const std::string &name) {
+    static const char *const kNames[] = {"crease", "corner", "hole", "interpolateboundary", "creasemethod",
+                                         "smoothtriangles"};
+    return std::find(std::begin(kNames), std::end(kNames), name) != std::end(kNames);
+}
+
+// Applies the tags that carry topology or options (far_utils.h semantics) and notes the
+// warnings they deserve.
 void apply_tags(OsdShape *s) {
+    std::vector<std::string> options_seen;
     for (const OsdTag &t : s->tags) {
+        if (!is_vertex_tag(t.name)) {
+            s->warning_lines.push_back(t.line);
+            continue;
+        }
+        for (float f : t.floats) {
+            if (f < 0.0f) {
+                s->warning_lines.push_back(t.line);
+            }
+        }
+        if (t.name == "interpolateboundary" || t.name == "creasemethod" || t.name == "smoothtriangles") {
+            if (std::find(options_seen.begin(), options_seen.end(), t.name) != options_seen.end()) {
+                s->warning_lines.push_back(t.line);
+            }
+            options_seen.push_back(t.name);
+        }
         if (t.name == "crease") {
             for (std::size_t j = 0; j + 1 < t.ints.size(); j += 2) {
                 s->crease_vertices.push_back(t.ints[j]);
@@ -163,11 +192,12 @@ bool parse_osd_shape(const std::string &text, OsdShape *out, std::string *error)
     int line_no = 0;
     while (std::getline(in, line)) {
         ++line_no;
+        line = line.substr(0, line.find('#'));  // comments, also after a statement
         if (!line.empty() && line.back() == '\r') {
             line.pop_back();
         }
         std::vector<std::string> tok = split_ws(line);
-        if (tok.empty() || tok[0][0] == '#') {
+        if (tok.empty()) {
             continue;
         }
         if (tok[0] == "v") {
@@ -191,11 +221,14 @@ bool parse_osd_shape(const std::string &text, OsdShape *out, std::string *error)
             if (!parse_tag(tok, &tag)) {
                 return fail(error, line_no, "malformed tag line");
             }
+            tag.line = line_no;
             s.tags.push_back(std::move(tag));
+        } else if (!is_silent_statement(tok[0])) {
+            s.warning_lines.push_back(line_no);
         }
-        // vt, vn, s, g, o, usemtl, mtllib: no vertex data.
     }
     apply_tags(&s);
+    std::sort(s.warning_lines.begin(), s.warning_lines.end());
     *out = std::move(s);
     return true;
 }

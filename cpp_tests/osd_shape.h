@@ -21,6 +21,7 @@ namespace profsubd_test {
 
 // One `t` line.
 struct OsdTag {
+    int line = 0;  // 1-based line in the file
     std::string name;
     std::vector<int> ints;
     std::vector<float> floats;
@@ -40,6 +41,11 @@ struct OsdShape {
     std::vector<OsdTag> tags;  // every tag line, in file order
     OpenSubdiv::Sdc::Options options;  // from the tags, profsubd defaults otherwise
     bool boundary_tagged = false;
+    // Lines a reader must report as ignored or adjusted, one entry per warning: unknown
+    // statements, tags without effect on vertex data (face-varying, hierarchical edits,
+    // unknown names), each negative sharpness clamped to 0, and an option tag repeating an
+    // earlier one.
+    std::vector<int> warning_lines;
 
     int num_vertices() const { return static_cast<int>(positions.size() / 3); }
     int num_faces() const { return static_cast<int>(face_sizes.size()); }

@@ -324,6 +324,19 @@ void check_queries(Checker &ck) {
     expect(ck, profsubd_mesh_get_corners(m.get(), nullptr, sharp.data(), 1, nullptr), PROFSUBD_ERROR_NULL_ARGUMENT,
            {"vertices"}, "get_corners NULL vertices");
 
+    size_t nw = 7;
+    ck.equal(int(profsubd_mesh_num_warnings(m.get(), &nw)), int(PROFSUBD_OK), "num_warnings");
+    ck.equal(nw, size_t(0), "a mesh from profsubd_mesh_new has no reader warnings");
+    expect(ck, profsubd_mesh_num_warnings(nullptr, &nw), PROFSUBD_ERROR_NULL_ARGUMENT, {"mesh"}, "num_warnings NULL mesh");
+    expect(ck, profsubd_mesh_num_warnings(m.get(), nullptr), PROFSUBD_ERROR_NULL_ARGUMENT, {"out"}, "num_warnings NULL out");
+    const char *w = "untouched";
+    expect(ck, profsubd_mesh_get_warning(m.get(), 0, &w), PROFSUBD_ERROR_INVALID_ARGUMENT, {"0"},
+           "get_warning index past the end");
+    expect(ck, profsubd_mesh_get_warning(nullptr, 0, &w), PROFSUBD_ERROR_NULL_ARGUMENT, {"mesh"}, "get_warning NULL mesh");
+    expect(ck, profsubd_mesh_get_warning(m.get(), 0, nullptr), PROFSUBD_ERROR_NULL_ARGUMENT, {"out"},
+           "get_warning NULL out");
+    ck.equal(std::string(w), std::string("untouched"), "get_warning: failed call leaves *out alone");
+
     profsubd_mesh_report r;
     std::memset(&r, 0, sizeof r);
     r.struct_size = sizeof r;

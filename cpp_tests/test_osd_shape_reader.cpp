@@ -70,7 +70,11 @@ void check_reader_on_inline_text(Checker &ck) {
         "t hole 1/0/0 1\n"
         "t interpolateboundary 1/0/0 2\n"
         "t creasemethod 0/0/1 chaikin\n"
-        "t smoothtriangles 0/0/1 smooth\n";
+        "t smoothtriangles 0/0/1 smooth\n"
+        "t facevaryinginterpolateboundary 1/0/0 1\n"
+        "t interpolateboundary 1/0/0 2\n"
+        "bevel on\n"
+        "g group # comment\n";
     OsdShape s;
     std::string err;
     if (!ck.check(parse_osd_shape(text, &s, &err), "parse: " + err)) {
@@ -89,6 +93,8 @@ void check_reader_on_inline_text(Checker &ck) {
              "interpolateboundary 2 = edge only");
     ck.equal(int(s.options.GetCreasingMethod()), int(Options::CREASE_CHAIKIN), "creasemethod");
     ck.equal(int(s.options.GetTriangleSubdivision()), int(Options::TRI_SUB_SMOOTH), "smoothtriangles");
+    ck.check(s.warning_lines == std::vector<int>({12, 18, 19, 20}),
+             "warnings: negative sharpness, face-varying tag, repeated option, unknown statement");
 
     auto refiner = build_refiner(s);
     if (!ck.check(refiner != nullptr, "Far accepts the inline mesh")) {

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 
@@ -300,6 +301,36 @@ void check_write_read(Checker &ck, const profsubd_mesh *m, const CapiMesh &c, co
     }
 }
 
+// The reader's warnings: one per ignored or adjusted line, each "file:line: ...".
+void check_warnings(Checker &ck, const profsubd_mesh *m, const OsdShape &s, const std::string &path) {
+    size_t n = 0;
+    if (!ck.check(profsubd_mesh_num_warnings(m, &n) == PROFSUBD_OK, "num_warnings")) {
+        return;
+    }
+    std::vector<int> lines;
+    for (size_t i = 0; i < n; ++i) {
+        const char *w = nullptr;
+        if (!ck.check(profsubd_mesh_get_warning(m, i, &w) == PROFSUBD_OK && w != nullptr, "get_warning")) {
+            return;
+        }
+        std::string text = w;
+        std::string prefix = path + ":";
+        if (!ck.check(text.compare(0, prefix.size(), prefix) == 0, "warning starts with the file: " + text)) {
+            continue;
+        }
+        lines.push_back(std::atoi(text.c_str() + prefix.size()));
+    }
+    std::sort(lines.begin(), lines.end());
+    std::string expected, got;
+    for (int l : s.warning_lines) {
+        expected += " " + std::to_string(l);
+    }
+    for (int l : lines) {
+        got += " " + std::to_string(l);
+    }
+    ck.equal(got, expected, "lines of the reader's warnings (ignored tags, clamped sharpness, repeated options)");
+}
+
 void check_osd_shape(Checker &ck, const std::string &path, const TempDir &tmp) {
     OsdShape s;
     std::string err;
@@ -317,6 +348,7 @@ void check_osd_shape(Checker &ck, const std::string &path, const TempDir &tmp) {
     }
     compare_arrays(ck, s, c);
     compare_with_far(ck, s, c);
+    check_warnings(ck, m.get(), s, path);
     bool manifold = !is_known_non_manifold(shape_name(path));
     ck.equal(c.report.is_manifold != 0, manifold, "is_manifold vs the folder's README");
     if (manifold) {

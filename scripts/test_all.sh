@@ -134,10 +134,14 @@ example_pkg_config() {
     "$dir/cube_example" "$dir/cube.obj"
 }
 
-if [ -z "${PROFSUBD_OSD_SHAPES:-}" ] && [ ! -d "$ROOT/../shared/conformance/osd_shapes" ]; then
-    echo "NOTE: OpenSubdiv shapes not found at $ROOT/../shared/conformance/osd_shapes;"
+SHAPES="${PROFSUBD_OSD_SHAPES:-$ROOT/../shared/conformance/osd_shapes}"
+if [ -d "$SHAPES" ]; then
+    echo "OpenSubdiv shapes: $SHAPES ($(find "$SHAPES" -maxdepth 1 -name '*.obj' | wc -l) .obj files)"
+else
+    echo "NOTE: OpenSubdiv shapes NOT FOUND at $SHAPES (set PROFSUBD_OSD_SHAPES);"
     echo "      the conformance tests will run on project-generated meshes only."
 fi
+export PROFSUBD_OSD_SHAPES="$SHAPES"
 
 step "dependencies" install_dependencies
 export PATH="$HOME/.cargo/bin:$PATH"

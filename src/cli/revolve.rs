@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::sweep::{read_text, write_surface};
+use super::sweep::{read_text, write_surface, SurfaceOutput};
 use crate::construct::sweep::revolve;
 use crate::construct::sweep::revolve::RevolveInput;
 use crate::error::Result;
@@ -17,18 +17,14 @@ pub struct RevolveArgs {
     /// every key and its default).
     #[arg(value_name = "INPUT.json")]
     pub input: PathBuf,
-    /// The OBJ file to write (control mesh with crease, corner and option tags).
-    #[arg(short, long, value_name = "OUT.obj")]
-    pub output: PathBuf,
-    /// Also write the data point each control vertex interpolates: one `x y z` line per
-    /// vertex, in vertex order.
-    #[arg(long, value_name = "TARGETS.txt")]
-    pub targets: Option<PathBuf>,
+    /// Where to write.
+    #[command(flatten)]
+    pub out: SurfaceOutput,
 }
 
 /// Run `revolve`; returns exit code 0 on success. Nothing is written on error.
 pub fn run(args: &RevolveArgs) -> Result<i32> {
     let input = RevolveInput::from_json(&read_text(&args.input)?, &args.input)?;
-    write_surface(&revolve(&input)?, &args.output, args.targets.as_deref())?;
+    write_surface(&revolve(&input)?, &args.out)?;
     Ok(0)
 }

@@ -18,6 +18,14 @@ pub struct SweepArgs {
     /// README for every key and its default).
     #[arg(value_name = "INPUT.json")]
     pub input: PathBuf,
+    /// Where to write.
+    #[command(flatten)]
+    pub out: SurfaceOutput,
+}
+
+/// Output flags of `sweep` and `revolve`.
+#[derive(Debug, Args)]
+pub struct SurfaceOutput {
     /// The OBJ file to write (control mesh with crease, corner and option tags).
     #[arg(short, long, value_name = "OUT.obj")]
     pub output: PathBuf,
@@ -36,15 +44,16 @@ pub(crate) fn read_text(path: &Path) -> Result<String> {
 }
 
 /// Write the mesh (and the targets when asked), then a one-line summary on stdout.
-pub(crate) fn write_surface(s: &SweptSurface, output: &Path, targets: Option<&Path>) -> Result<()> {
+pub(crate) fn write_surface(s: &SweptSurface, out: &SurfaceOutput) -> Result<()> {
+    let output = &out.output;
     write_obj_file(&s.mesh, output)?;
-    if let Some(path) = targets {
+    if let Some(path) = &out.targets {
         let mut text = String::with_capacity(s.targets.len() * 60);
         for p in &s.targets {
             let _ = writeln!(text, "{} {} {}", p.x, p.y, p.z);
         }
         std::fs::write(path, text).map_err(|e| Error::Io {
-            path: path.to_path_buf(),
+            path: path.clone(),
             message: e.to_string(),
         })?;
     }
@@ -65,6 +74,6 @@ pub(crate) fn write_surface(s: &SweptSurface, output: &Path, targets: Option<&Pa
 /// Run `sweep`; returns exit code 0 on success. Nothing is written on error.
 pub fn run(args: &SweepArgs) -> Result<i32> {
     let input = SweepInput::from_json(&read_text(&args.input)?, &args.input)?;
-    write_surface(&sweep(&input)?, &args.output, args.targets.as_deref())?;
+    write_surface(&sweep(&input)?, &args.out)?;
     Ok(0)
 }

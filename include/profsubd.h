@@ -185,6 +185,24 @@ typedef enum profsubd_caps {
 } profsubd_caps;
 
 /**
+ * Values for `profsubd_options_set_sweep_frame` (passed as `int32_t`).
+ */
+typedef enum profsubd_sweep_frame {
+    /**
+     * Translation only: the start frame everywhere.
+     */
+    PROFSUBD_FRAME_FIXED = 0,
+    /**
+     * Frenet frame, carried over where the curvature vanishes, never flipping at inflections.
+     */
+    PROFSUBD_FRAME_FRENET = 1,
+    /**
+     * Rotation-minimizing frame (double reflection), closing twist spread (the default).
+     */
+    PROFSUBD_FRAME_RMF = 2,
+} profsubd_sweep_frame;
+
+/**
  * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
  * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
@@ -224,6 +242,12 @@ typedef struct profsubd_profile profsubd_profile;
  * `offsets[i] .. offsets[i + 1] - 1` of `indices` (control vertices) and `weights`.
  */
 typedef struct profsubd_stencil_table profsubd_stencil_table;
+
+/**
+ * A built revolution or sweep (opaque): the fitted mesh and the data points. Release with
+ * `profsubd_swept_free`.
+ */
+typedef struct profsubd_swept profsubd_swept;
 
 /**
  * Caller arrays describing a mesh, as OpenSubdiv's `Far::TopologyDescriptor`. All counts
@@ -912,6 +936,116 @@ enum profsubd_status profsubd_refine_uniform(const struct profsubd_mesh *mesh,
  * The string is static: never free it.
  */
 const char *profsubd_status_string(int32_t status);
+
+/**
+ * Build a surface of revolution: `profile` holds `num_points` points `(r, z)` (2 doubles
+ * each), bottom to top, `r >= 0`; they are turned about the z axis. Settings (`options` may
+ * be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
+ * 16, 32), `profsubd_options_set_revolve_angle` (default 360), and the profile construction's
+ * interpolation and sharp angle. Ends on the axis become smooth poles (quad caps) or tips
+ * (corner-tagged). The model is fitted, and tagged, for edge-and-corner boundaries and
+ * uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings
+ * (the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
+ */
+enum profsubd_status profsubd_revolve(const double *profile,
+                                      size_t num_points,
+                                      const struct profsubd_options *options,
+                                      struct profsubd_swept **out);
+
+/**
+ * Sweep a planar profile along a trajectory: `profile` holds `num_profile_points` points
+ * `(a, b)` (2 doubles each; `a` along the frame's normal, `b` along its binormal),
+ * `trajectory` holds `num_trajectory_points` points `(x, y, z)` (3 doubles each). Settings
+ * (`options` may be NULL): `profsubd_options_set_sweep_samples` (profile intervals,
+ * trajectory intervals; default 16, 32), `_set_sweep_closed`, `_set_sweep_frame`,
+ * `_set_sweep_scale`, `_set_sweep_profile_end`, and the profile construction's interpolation
+ * and sharp angle. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings
+ * (coincident points, a crossing profile, a frame that cannot be built...; the message says
+ * which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
+ */
+enum profsubd_status profsubd_sweep(const double *profile,
+                                    size_t num_profile_points,
+                                    const double *trajectory,
+                                    size_t num_trajectory_points,
+                                    const struct profsubd_options *options,
+                                    struct profsubd_swept **out);
+
+/**
+ * Release a revolution or sweep. NULL is a no-op.
+ */
+void profsubd_swept_free(struct profsubd_swept *swept);
+
+/**
+ * A new mesh handle (caller-owned) with the fitted control mesh: quads, crease and corner
+ * tags, option tags.
+ */
+enum profsubd_status profsubd_swept_get_mesh(const struct profsubd_swept *swept,
+                                             struct profsubd_mesh **out);
+
+/**
+ * Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
+ * position equals point `i`. `capacity` and `*needed` count doubles; copy-out protocol as
+ * `profsubd_mesh_get_positions`.
+ */
+enum profsubd_status profsubd_swept_get_targets(const struct profsubd_swept *swept,
+                                                double *out,
+                                                size_t capacity,
+                                                size_t *needed);
+
+/**
+ * The fit's achieved residual (largest distance between a vertex's limit position and its
+ * data point) and the tolerance it met (1e-10 × the data points' bounding-box diagonal).
+ * Either output may be NULL.
+ */
+enum profsubd_status profsubd_swept_get_fit_residual(const struct profsubd_swept *swept,
+                                                     double *residual,
+                                                     double *tolerance);
+
+/**
+ * Set the sample intervals: along the profile, and around the axis (revolution) or along
+ * the trajectory (sweep); each 1 to 4096 (the build checks the rest: a multiple of 4 around a
+ * smooth pole, ...).
+ */
+enum profsubd_status profsubd_options_set_sweep_samples(struct profsubd_options *options,
+                                                        uint32_t samples_profile,
+                                                        uint32_t samples_path);
+
+/**
+ * Set the angle of a revolution in degrees, in (0, 360] (360: a closed full turn).
+ */
+enum profsubd_status profsubd_options_set_revolve_angle(struct profsubd_options *options,
+                                                        double degrees);
+
+/**
+ * Set whether the sweep's profile and trajectory are closed (0 open, 1 closed; default 0).
+ */
+enum profsubd_status profsubd_options_set_sweep_closed(struct profsubd_options *options,
+                                                       int32_t closed_profile,
+                                                       int32_t closed_trajectory);
+
+/**
+ * Set the sweep's frame: `PROFSUBD_FRAME_FIXED`, `PROFSUBD_FRAME_FRENET` or
+ * `PROFSUBD_FRAME_RMF`.
+ */
+enum profsubd_status profsubd_options_set_sweep_frame(struct profsubd_options *options,
+                                                      int32_t frame);
+
+/**
+ * Set the profile's scale at the start and at the end of the trajectory (finite, > 0;
+ * linear in between; default 1 and 1).
+ */
+enum profsubd_status profsubd_options_set_sweep_scale(struct profsubd_options *options,
+                                                      double start,
+                                                      double end);
+
+/**
+ * Set a second profile (`num_points` points `(a, b)`, 2 doubles each, copied) that the
+ * profile morphs into along the trajectory; it must have as many points as the profile.
+ * NULL with 0 points removes it.
+ */
+enum profsubd_status profsubd_options_set_sweep_profile_end(struct profsubd_options *options,
+                                                            const double *points,
+                                                            size_t num_points);
 
 /**
  * The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare

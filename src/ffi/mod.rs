@@ -63,6 +63,7 @@ pub mod profile;
 pub mod ptr;
 pub mod refine;
 pub mod status;
+pub mod sweep;
 pub mod version;
 
 pub use evaluator::profsubd_evaluator;

@@ -61,6 +61,8 @@ pub struct OptionsData {
     pub subdiv: PartialOptions,
     /// Profile construction settings (`src/ffi/profile.rs`).
     pub profile: crate::ffi::profile::ProfileSettings,
+    /// Revolution and sweep settings (`src/ffi/sweep.rs`).
+    pub sweep: crate::ffi::sweep::SweepSettings,
 }
 
 impl Handle for profsubd_options {

@@ -1,0 +1,181 @@
+use std::ptr::{null, null_mut};
+
+use super::*;
+use crate::ffi::error::last_error;
+use crate::ffi::mesh::{mesh_arg, profsubd_mesh_free};
+use crate::ffi::options::{profsubd_options_free, profsubd_options_new};
+use crate::ffi::profile::profsubd_options_set_interpolation;
+use crate::ffi::status::profsubd_status::*;
+
+fn options() -> *mut profsubd_options {
+    let mut o = null_mut();
+    assert_eq!(unsafe { profsubd_options_new(&mut o) }, PROFSUBD_OK);
+    o
+}
+
+fn circle(n: usize, r: f64, dims: usize) -> Vec<f64> {
+    (0..n)
+        .flat_map(|i| {
+            let t = std::f64::consts::TAU * i as f64 / n as f64;
+            [r * t.cos(), r * t.sin(), 0.0].into_iter().take(dims)
+        })
+        .collect()
+}
+
+unsafe fn mesh_of(s: *const profsubd_swept) -> crate::Mesh {
+    let mut m = null_mut();
+    assert_eq!(profsubd_swept_get_mesh(s, &mut m), PROFSUBD_OK);
+    let mesh = mesh_arg(m, "m").unwrap().clone();
+    profsubd_mesh_free(m);
+    mesh
+}
+
+#[test]
+fn revolve_and_sweep_build_what_the_rust_api_builds() {
+    let o = options();
+    unsafe {
+        // A cone, 8 intervals up, 12 around, polyline.
+        let cone = [1.0, 0.0, 0.0, 2.0];
+        assert_eq!(profsubd_options_set_sweep_samples(o, 8, 12), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_interpolation(o, 1), PROFSUBD_OK);
+        let mut s = null_mut();
+        assert_eq!(profsubd_revolve(cone.as_ptr(), 2, o, &mut s), PROFSUBD_OK);
+        let mut input = RevolveInput::new(vec![[1.0, 0.0], [0.0, 2.0]]);
+        input.samples_profile = 8;
+        input.samples_around = 12;
+        input.interpolation = crate::curves::Interpolation::Polyline;
+        let expect = revolve(&input).unwrap();
+        assert_eq!(mesh_of(s), expect.mesh);
+        // Targets: copy-out protocol.
+        let mut needed = 0;
+        let mut small = [0.0; 3];
+        assert_eq!(
+            profsubd_swept_get_targets(s, small.as_mut_ptr(), 3, &mut needed),
+            PROFSUBD_ERROR_BUFFER_TOO_SMALL
+        );
+        assert_eq!(needed, 3 * expect.targets.len());
+        assert_eq!(small, [0.0; 3]);
+        let mut all = vec![0.0; needed];
+        assert_eq!(
+            profsubd_swept_get_targets(s, all.as_mut_ptr(), needed, null_mut()),
+            PROFSUBD_OK
+        );
+        assert_eq!(all[3..6], expect.targets[1].to_array());
+        let (mut r, mut t) = (f64::NAN, f64::NAN);
+        assert_eq!(
+            profsubd_swept_get_fit_residual(s, &mut r, &mut t),
+            PROFSUBD_OK
+        );
+        assert!(r <= t && t == expect.fit.tolerance);
+        profsubd_swept_free(s);
+
+        // A torus with a scaled, closed profile along a closed trajectory.
+        let (p, tr) = (circle(16, 0.5, 2), circle(24, 2.0, 3));
+        assert_eq!(profsubd_options_set_interpolation(o, 0), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_sweep_samples(o, 8, 16), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_sweep_closed(o, 1, 1), PROFSUBD_OK);
+        assert_eq!(
+            profsubd_options_set_sweep_frame(o, profsubd_sweep_frame::PROFSUBD_FRAME_FRENET as i32),
+            PROFSUBD_OK
+        );
+        assert_eq!(profsubd_options_set_sweep_scale(o, 1.5, 1.5), PROFSUBD_OK);
+        let mut s = null_mut();
+        assert_eq!(
+            profsubd_sweep(p.as_ptr(), 16, tr.as_ptr(), 24, o, &mut s),
+            PROFSUBD_OK
+        );
+        let mut input = SweepInput::new(
+            p.chunks(2).map(|c| [c[0], c[1]]).collect(),
+            tr.chunks(3).map(|c| [c[0], c[1], c[2]]).collect(),
+        );
+        (input.samples_profile, input.samples_trajectory) = (8, 16);
+        (input.closed_profile, input.closed_trajectory) = (true, true);
+        input.frame = FrameKind::Frenet;
+        input.scale = [1.5, 1.5];
+        assert_eq!(mesh_of(s), sweep(&input).unwrap().mesh);
+        profsubd_swept_free(s);
+        profsubd_options_free(o);
+    }
+}
+
+#[test]
+fn bad_input_gives_a_specific_status_and_no_output() {
+    let o = options();
+    unsafe {
+        let line = [1.0, 0.0, 1.0, 1.0];
+        let mut s = null_mut();
+        assert_eq!(
+            profsubd_revolve(null(), 2, null(), &mut s),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_revolve(line.as_ptr(), 2, null(), null_mut()),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        let crossing = [1.0, 0.0, -1.0, 1.0];
+        assert_eq!(
+            profsubd_revolve(crossing.as_ptr(), 2, null(), &mut s),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("crosses the axis"));
+        assert!(s.is_null());
+        let traj = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        assert_eq!(
+            profsubd_sweep(line.as_ptr(), 2, traj.as_ptr(), 2, null(), &mut s),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("coincide"), "{}", last_error());
+        let straight = [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 2.0];
+        assert_eq!(profsubd_options_set_sweep_frame(o, 1), PROFSUBD_OK);
+        assert_eq!(
+            profsubd_sweep(line.as_ptr(), 2, straight.as_ptr(), 3, o, &mut s),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("undefined everywhere"));
+        assert!(s.is_null());
+        assert_eq!(
+            profsubd_sweep(line.as_ptr(), usize::MAX, straight.as_ptr(), 3, o, &mut s),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        // Setters refuse out-of-range values.
+        assert_eq!(
+            profsubd_options_set_sweep_frame(o, 3),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_sweep_closed(o, 2, 0),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_sweep_samples(o, 0, 8),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_revolve_angle(o, 400.0),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_revolve_angle(o, f64::NAN),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_sweep_scale(o, 1.0, -1.0),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_sweep_profile_end(o, null(), 3),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_options_set_sweep_profile_end(null_mut(), null(), 0),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        // A handle of another kind.
+        assert_eq!(
+            profsubd_swept_get_mesh(o.cast::<profsubd_swept>(), &mut null_mut()),
+            PROFSUBD_ERROR_INVALID_HANDLE
+        );
+        profsubd_swept_free(null_mut());
+        profsubd_options_free(o);
+    }
+}

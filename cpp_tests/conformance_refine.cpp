@@ -494,6 +494,24 @@ void compare_with_openmesh(Checker &c, Stats &stats, const std::string &name, co
     c.check(missing == 0, "point sets agree");
 }
 
+// Every boundary rule and crease method (the file's triangle rule), levels 1-3, against Far;
+// levels 1-2 against OpenMesh where it applies. Returns 1 if OpenMesh was compared.
+int compare_file(Checker &c, Stats &far_stats, Stats &om_stats, const std::string &name,
+                 const OsdShape &s) {
+    for (auto b : {Sdc::Options::VTX_BOUNDARY_NONE, Sdc::Options::VTX_BOUNDARY_EDGE_ONLY,
+                   Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER}) {
+        for (auto m : {Sdc::Options::CREASE_UNIFORM, Sdc::Options::CREASE_CHAIKIN}) {
+            Sdc::Options o = s.options;
+            o.SetVtxBoundaryInterpolation(b);
+            o.SetCreasingMethod(m);
+            for (int level = 1; level <= 3; ++level) compare_with_far(c, far_stats, name, s, o, level);
+        }
+    }
+    if (!openmesh_applies(s, s.options)) return 0;
+    for (int level = 1; level <= 2; ++level) compare_with_openmesh(c, om_stats, name, s, s.options, level);
+    return 1;
+}
+
 }  // namespace
 
 int main() {
@@ -521,20 +539,26 @@ int main() {
         std::string err;
         c.set_context(path);
         if (!c.check(profsubd_test::read_osd_shape(path, &s, &err), "read: " + err)) continue;
-        const std::string name = profsubd_test::shape_name(path);
-        for (auto b : boundaries) {
-            for (auto m : methods) {
-                Sdc::Options o = s.options;  // keeps the shape's triangle rule
-                o.SetVtxBoundaryInterpolation(b);
-                o.SetCreasingMethod(m);
-                for (int level = 1; level <= 3; ++level) compare_with_far(c, far_stats, name, s, o, level);
-            }
-        }
-        if (openmesh_applies(s, s.options)) {
-            ++shapes_om;
-            for (int level = 1; level <= 2; ++level) compare_with_openmesh(c, om_stats, name, s, s.options, level);
+        shapes_om += compare_file(c, far_stats, om_stats, profsubd_test::shape_name(path), s);
+    }
+
+    // Meshes the project generates (examples/: bundled mesh, profiles, sweeps).
+    const std::string source = __FILE__;
+    const std::string examples = source.substr(0, source.rfind("/cpp_tests/")) + "/examples";
+    int project = 0;
+    for (const char *sub : {"meshes", "profiles", "sweeps"}) {
+        for (const std::string &path : profsubd_test::list_obj_files(examples + "/" + sub)) {
+            OsdShape s;
+            std::string err;
+            c.set_context(path);
+            if (!c.check(profsubd_test::read_osd_shape(path, &s, &err), "read: " + err)) continue;
+            ++project;
+            shapes_om += compare_file(c, far_stats, om_stats, std::string(sub) + "/" + profsubd_test::shape_name(path), s);
         }
     }
+    c.set_context("");
+    c.note("project meshes: " + std::to_string(project) + " in " + examples);
+    c.check(project > 0, "the project's example meshes were found");
 
     std::mt19937 rng(20260322);
     const int kRandom = 60;

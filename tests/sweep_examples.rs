@@ -1,5 +1,6 @@
 //! The bundled sweep examples (`examples/sweeps/`): each regenerates to its checked-in OBJ,
-//! has the promised topology and crease structure, and the CLI writes the same mesh plus one
+//! and its data points to the checked-in `.targets.txt`, has the promised topology and crease
+//! structure, and the CLI writes the same mesh plus one
 //! target line per vertex; bad input writes nothing.
 
 #[path = "support/mesh_compare.rs"]
@@ -57,6 +58,20 @@ fn examples_regenerate_with_their_topology() {
         let s = build(name);
         let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
         assert_same(&s.mesh, &stored, name);
+        // The checked-in data points (what the C++ harness compares OpenSubdiv's limit with).
+        let text = std::fs::read_to_string(example(name, "targets.txt")).unwrap();
+        let stored: Vec<f64> = text
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        assert_eq!(stored.len(), 3 * s.targets.len(), "{name}");
+        let tol = 1e-9 * s.mesh.bounding_box_diagonal();
+        for (t, q) in s.targets.iter().zip(stored.chunks(3)) {
+            assert!(
+                t.distance(glam::DVec3::new(q[0], q[1], q[2])) <= tol,
+                "{name}: target {t}"
+            );
+        }
         assert!(s.fit.residual <= 1e-10 * s.mesh.bounding_box_diagonal());
         assert!(s.mesh.face_sizes().iter().all(|&n| n == 4));
         let r = check(&s.mesh);

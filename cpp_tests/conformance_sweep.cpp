@@ -1,0 +1,234 @@
+// Revolutions and sweeps against OpenSubdiv: the limit position of every control vertex,
+// computed by OpenSubdiv's Bfr::Surface<double> at a corner of one of its faces (approximation
+// levels 10), must equal the data point the vertex interpolates, to 1e-10 x the bounding-box
+// diagonal of the data points.
+//
+// Models: the checked-in examples (examples/sweeps/*.obj with *.targets.txt: wine glass,
+// torus knot tube, handrail) and models built here through the C API (sphere, cylinder,
+// cone, torus, a square tube along a closed curve, an L-shaped square rail), each read back
+// through the C API.
+#include "capi_mesh.h"
+#include "osd_shape.h"
+#include "test_support.h"
+
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/topologyLevel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace profsubd_test;
+using namespace OpenSubdiv;
+
+#ifndef PROFSUBD_SWEEP_EXAMPLES
+#error "PROFSUBD_SWEEP_EXAMPLES must name examples/sweeps"
+#endif
+
+namespace {
+
+struct Model {
+    std::string name;
+    OsdShape shape;
+    std::vector<double> targets;  // 3 per vertex
+};
+
+// Largest |a_i - b_i| over points of 3 doubles, and the diagonal of b's bounding box.
+void compare(const std::vector<double> &a, const std::vector<double> &b, double *worst,
+             double *diag) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    *worst = 0;
+    for (size_t v = 0; 3 * v + 2 < b.size(); ++v) {
+        double d2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            double x = b[3 * v + k];
+            lo[k] = std::min(lo[k], x);
+            hi[k] = std::max(hi[k], x);
+            d2 += (a[3 * v + k] - x) * (a[3 * v + k] - x);
+        }
+        // NaN (no surface found) must fail, so compare with !(<=).
+        *worst = !(std::sqrt(d2) <= *worst) ? std::sqrt(d2) : *worst;
+    }
+    *diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                      (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+// Bfr's limit position of every vertex: evaluate the surface of one incident face at the
+// parametric coordinate of the vertex's corner.
+std::vector<double> bfr_limits(const Far::TopologyRefiner &refiner, const std::vector<double> &points) {
+    Bfr::RefinerSurfaceFactory<>::Options options;
+    options.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
+    Bfr::RefinerSurfaceFactory<> factory(refiner, options);
+    const Far::TopologyLevel &level = refiner.GetLevel(0);
+    std::vector<double> out(points.size(), std::nan(""));
+    Bfr::Surface<double> surface;
+    Bfr::Surface<double>::PointDescriptor desc(3);
+    std::vector<double> local;
+    for (int v = 0; v < level.GetNumVertices(); ++v) {
+        Far::ConstIndexArray faces = level.GetVertexFaces(v);
+        if (faces.size() == 0 || !factory.InitVertexSurface<double>(faces[0], &surface)) {
+            continue;
+        }
+        Far::ConstIndexArray fv = level.GetFaceVertices(faces[0]);
+        int corner = static_cast<int>(std::find(fv.begin(), fv.end(), v) - fv.begin());
+        local.resize(static_cast<size_t>(surface.GetNumPatchPoints()) * 3);
+        surface.PreparePatchPoints(points.data(), desc, local.data(), desc);
+        double uv[2];
+        surface.GetParameterization().GetVertexCoord(corner, uv);
+        surface.Evaluate(uv, local.data(), desc, &out[3 * static_cast<size_t>(v)]);
+    }
+    return out;
+}
+
+void check_model(Checker &ck, const Model &m) {
+    ck.set_context(m.name);
+    std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(m.shape);
+    if (!ck.check(refiner != nullptr, "Far accepts the mesh")) {
+        return;
+    }
+    ck.equal(m.targets.size(), m.shape.positions.size(), "one target per vertex");
+    double worst = 0, diag = 0;
+    compare(bfr_limits(*refiner, m.shape.positions), m.targets, &worst, &diag);
+    std::ostringstream s;
+    s << m.name << ": " << m.targets.size() / 3 << " vertices, Bfr limit vs target max "
+      << worst / diag << " x diagonal";
+    ck.note(s.str());
+    ck.check(worst <= 1e-10 * diag, "Bfr's limit at every control vertex equals its target");
+}
+
+bool read_targets(const std::string &path, std::vector<double> *out) {
+    std::ifstream in(path);
+    double x;
+    while (in >> x) {
+        out->push_back(x);
+    }
+    return !out->empty() && out->size() % 3 == 0;
+}
+
+struct SweptDeleter {
+    void operator()(profsubd_swept *s) const { profsubd_swept_free(s); }
+};
+
+// Read a C API result back as a model (mesh through the C API, then the targets).
+bool take_result(Checker &ck, const std::string &name, profsubd_status st, profsubd_swept *raw,
+                 Model *out) {
+    std::unique_ptr<profsubd_swept, SweptDeleter> swept(raw);
+    ck.set_context(name);
+    if (!ck.check(st == PROFSUBD_OK, "build: " + describe_status(st))) {
+        return false;
+    }
+    profsubd_mesh *mesh_raw = nullptr;
+    if (!ck.check(profsubd_swept_get_mesh(swept.get(), &mesh_raw) == PROFSUBD_OK, "get mesh")) {
+        return false;
+    }
+    MeshPtr mesh(mesh_raw);
+    size_t needed = 0;
+    ck.equal(profsubd_swept_get_targets(swept.get(), nullptr, 0, &needed),
+             PROFSUBD_ERROR_BUFFER_TOO_SMALL, "targets size query");
+    out->targets.assign(needed, 0.0);
+    ck.equal(profsubd_swept_get_targets(swept.get(), out->targets.data(), needed, &needed),
+             PROFSUBD_OK, "targets copy-out");
+    CapiMesh capi;
+    std::string err = read_capi_mesh(mesh.get(), &capi);
+    if (!ck.check(err.empty(), "read back: " + err)) {
+        return false;
+    }
+    ck.check(capi.report.is_manifold && capi.report.is_consistently_oriented,
+             "manifold, consistently oriented");
+    out->name = name;
+    out->shape = to_osd_shape(capi, profsubd_default_options());
+    return true;
+}
+
+std::vector<double> circle(int n, double r, int dims) {
+    std::vector<double> c;
+    for (int i = 0; i < n; ++i) {
+        double t = 2 * M_PI * i / n;
+        c.push_back(r * std::cos(t));
+        c.push_back(r * std::sin(t));
+        if (dims == 3) {
+            c.push_back(0.2 * std::sin(2 * t));
+        }
+    }
+    return c;
+}
+
+}  // namespace
+
+int main() {
+    Checker ck("conformance_sweep");
+    std::vector<Model> models;
+    for (const char *name : {"wine_glass", "torus_knot_tube", "handrail"}) {
+        Model m;
+        m.name = name;
+        std::string base = std::string(PROFSUBD_SWEEP_EXAMPLES) + "/" + name;
+        std::string err;
+        ck.set_context(name);
+        if (ck.check(read_osd_shape(base + ".obj", &m.shape, &err), "read " + base + ".obj: " + err) &&
+            ck.check(read_targets(base + ".targets.txt", &m.targets), "read targets")) {
+            models.push_back(std::move(m));
+        }
+    }
+    profsubd_options *raw_options = nullptr;
+    profsubd_options_new(&raw_options);
+    OptionsPtr options(raw_options);
+    // Revolutions at 16 x 32 samples: sphere (two smooth poles), cylinder, cone (tip).
+    std::vector<double> semicircle;
+    for (int i = 0; i <= 48; ++i) {
+        double t = -M_PI / 2 + M_PI * i / 48;
+        semicircle.push_back(i == 0 || i == 48 ? 0.0 : 1.5 * std::cos(t));
+        semicircle.push_back(1.5 * std::sin(t));
+    }
+    const std::vector<double> cylinder = {1, 0, 1, 2}, cone = {1, 0, 0, 2};
+    profsubd_options_set_sweep_samples(raw_options, 16, 32);
+    struct Rev {
+        const char *name;
+        const std::vector<double> *profile;
+    } revs[] = {{"sphere 16x32", &semicircle}, {"cylinder 16x32", &cylinder}, {"cone 16x32", &cone}};
+    for (const Rev &r : revs) {
+        profsubd_swept *s = nullptr;
+        profsubd_status st = profsubd_revolve(r.profile->data(), r.profile->size() / 2, raw_options, &s);
+        Model m;
+        if (take_result(ck, r.name, st, s, &m)) {
+            models.push_back(std::move(m));
+        }
+    }
+    // Sweeps: a torus (circle along a circle), a square tube along a closed wavy curve (four
+    // crease loops), an L-shaped square rail (a crease ring at the corner).
+    const std::vector<double> small = circle(32, 0.5, 2), square = {-0.2, -0.2, 0.2, -0.2, 0.2, 0.2, -0.2, 0.2};
+    std::vector<double> ring = circle(48, 2.0, 2), wavy = circle(48, 2.0, 3), ring3;
+    for (size_t i = 0; i < ring.size(); i += 2) {
+        ring3.insert(ring3.end(), {ring[i], ring[i + 1], 0.0});
+    }
+    const std::vector<double> ell = {0, 0, 0, 2, 0, 0, 2, 2, 0};
+    struct Sw {
+        const char *name;
+        const std::vector<double> *profile, *trajectory;
+        int closed_trajectory;
+        uint32_t samples_profile, samples_trajectory;
+    } sweeps[] = {
+        {"torus 16x32", &small, &ring3, 1, 16, 32},
+        {"square tube on a closed curve", &square, &wavy, 1, 8, 48},
+        {"L-shaped square rail", &square, &ell, 0, 8, 16},
+    };
+    for (const Sw &w : sweeps) {
+        profsubd_options_set_sweep_samples(raw_options, w.samples_profile, w.samples_trajectory);
+        profsubd_options_set_sweep_closed(raw_options, 1, w.closed_trajectory);
+        profsubd_swept *s = nullptr;
+        profsubd_status st = profsubd_sweep(w.profile->data(), w.profile->size() / 2,
+                                            w.trajectory->data(), w.trajectory->size() / 3,
+                                            raw_options, &s);
+        Model m;
+        if (take_result(ck, w.name, st, s, &m)) {
+            models.push_back(std::move(m));
+        }
+    }
+    for (const Model &m : models) {
+        check_model(ck, m);
+    }
+    ck.set_context("");
+    ck.equal(models.size(), size_t(9), "every model built");
+    return ck.finish();
+}

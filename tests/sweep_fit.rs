@@ -74,3 +74,46 @@ fn torus_sphere_cylinder_cone_interpolate_their_targets() {
         );
     }
 }
+
+#[test]
+fn every_frame_kind_with_scale_and_morph_interpolates_its_targets() {
+    // A helix-like open trajectory; a square morphing into a diamond while growing.
+    let trajectory: Vec<[f64; 3]> = (0..=24)
+        .map(|i| {
+            let t = TAU * i as f64 / 24.0;
+            [2.0 * t.cos(), 2.0 * t.sin(), 0.4 * t]
+        })
+        .collect();
+    let square = vec![[-0.3, -0.3], [0.3, -0.3], [0.3, 0.3], [-0.3, 0.3]];
+    let diamond = vec![[0.0, -0.4], [0.4, 0.0], [0.0, 0.4], [-0.4, 0.0]];
+    for frame in ["fixed", "frenet", "rmf"] {
+        let json = format!(
+            r#"{{"profile": {square:?}, "closed_profile": true, "trajectory": {:?}, "frame": "{frame}",
+                "scale": [1, 1.5], "profile_end": {diamond:?}, "samples_profile": 8, "samples_trajectory": 24}}"#,
+            if frame == "fixed" {
+                &trajectory[..3]
+            } else {
+                &trajectory[..]
+            }
+        );
+        let input = SweepInput::from_json(&json, std::path::Path::new("t.json")).unwrap();
+        let s = sweep(&input).unwrap();
+        assert!(relative_residual(&s) <= 1e-10, "{frame}");
+        // Four crease lines along the sweep, one per profile corner.
+        assert_eq!(s.mesh.creases().len(), 4 * 24, "{frame}");
+        // The last ring is the diamond scaled by 1.5 (corners at distance 0.6 from the axis).
+        let last = &s.targets[s.targets.len() - 8..];
+        let end = input
+            .trajectory
+            .last()
+            .map(|&p| glam::DVec3::from(p))
+            .unwrap();
+        for (k, p) in last.iter().enumerate().step_by(2) {
+            assert!(
+                (p.distance(end) - 0.6).abs() < 1e-9,
+                "{frame}: corner {k} at {}",
+                p.distance(end)
+            );
+        }
+    }
+}

@@ -654,9 +654,8 @@ mod tests {
     }
 
     #[test]
-    fn frenet_on_a_closed_curve_with_one_inflection_parity_error() {
-        // Planar closed curves have an even number of inflections; a circle has none and the
-        // Frenet frame equals the rotation-minimizing one there.
+    fn frenet_equals_rmf_on_a_circle() {
+        // A circle has no inflection and no torsion: both frames turn with the curve alone.
         let n = 64;
         let circle: Vec<FramePoint> = (0..n)
             .map(|i| {
@@ -672,6 +671,63 @@ mod tests {
         let b = compute_frames(&circle, true, FrameKind::RotationMinimizing).unwrap();
         for (x, y) in a.iter().zip(&b) {
             assert!((x.normal - y.normal).length() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn frenet_carries_its_frame_across_a_straight_stretch() {
+        // A quarter circle in the xy plane (from the origin, heading +y, turning to −x), a
+        // straight piece along −x, then a quarter circle bending down (−z): the Frenet normal
+        // is undefined on the straight piece.
+        let mut pts = Vec::new();
+        for i in 0..8 {
+            let t = TAU / 4.0 * i as f64 / 8.0;
+            let (c, s) = (t.cos(), t.sin());
+            let radial = DVec3::new(c, s, 0.0);
+            pts.push(FramePoint::smooth(
+                radial - DVec3::X,
+                DVec3::new(-s, c, 0.0),
+                -radial,
+            ));
+        }
+        for i in 0..4 {
+            let p = DVec3::new(-1.0 - 0.25 * i as f64, 1.0, 0.0);
+            pts.push(FramePoint::smooth(p, -DVec3::X, DVec3::ZERO));
+        }
+        for i in 0..=8 {
+            let t = TAU / 4.0 * i as f64 / 8.0;
+            let (c, s) = (t.cos(), t.sin());
+            let p = DVec3::new(-2.0 - s, 1.0, c - 1.0);
+            pts.push(FramePoint::smooth(
+                p,
+                DVec3::new(-c, 0.0, -s),
+                DVec3::new(s, 0.0, -c),
+            ));
+        }
+        let f = compute_frames(&pts, false, FrameKind::Frenet).unwrap();
+        // On the first arc the normal points at its centre; on the straight piece it is the
+        // one carried from the arc's end (−y); on the second arc, that arc's Frenet normal
+        // (−z at its start, +x at its end): Frenet's own twist, but no flip.
+        for g in &f[..8] {
+            assert!(
+                (g.normal - (DVec3::new(-1.0, 0.0, 0.0) - g.origin).normalize()).length() < 1e-12
+            );
+        }
+        for g in &f[8..12] {
+            assert!((g.normal - (-DVec3::Y)).length() < 1e-12, "{}", g.normal);
+        }
+        assert!(
+            (f[12].normal - (-DVec3::Z)).length() < 1e-12,
+            "{}",
+            f[12].normal
+        );
+        assert!(
+            (f[20].normal - DVec3::X).length() < 1e-12,
+            "{}",
+            f[20].normal
+        );
+        for g in &f {
+            assert_orthonormal(g);
         }
     }
 

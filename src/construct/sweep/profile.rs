@@ -44,8 +44,9 @@ fn lift(points: &[[f64; 2]]) -> Vec<DVec3> {
 
 impl SweptProfile {
     /// Validate the profile points (and `end`, which must have as many points) and build
-    /// the curves. A point turning by more than `sharp_angle` (radians) in either profile is a
-    /// corner of both, so that the crease runs the whole length of the sweep.
+    /// the curves. A point turning by more than `sharp_angle` (radians) in either profile, or
+    /// listed in `forced`, is a corner of both, so that the crease runs the whole length of the
+    /// sweep.
     ///
     /// Errors ([`Error::InvalidArgument`]): those of [`SpaceCurve::new`], a different point
     /// count for `end`, a profile whose polygon crosses itself.
@@ -55,12 +56,14 @@ impl SweptProfile {
         closed: bool,
         interpolation: Interpolation,
         sharp_angle: f64,
+        forced: &[usize],
     ) -> Result<SweptProfile> {
         let start = lift(points);
         // Validate before looking at angles and crossings.
         SpaceCurve::new("profile", &start, closed, Interpolation::Polyline, &[])?;
         check_no_crossing("profile", points, closed)?;
         let mut corners = detect_corners(&start, closed, sharp_angle);
+        corners.extend_from_slice(forced);
         let end = match end {
             None => None,
             Some(e) => {
@@ -179,13 +182,13 @@ mod tests {
 
     #[test]
     fn square_profile_samples_have_four_corners_and_orientation() {
-        let p = SweptProfile::new(&SQUARE, None, true, Interpolation::Spline, 0.5).unwrap();
+        let p = SweptProfile::new(&SQUARE, None, true, Interpolation::Spline, 0.5, &[]).unwrap();
         let s = p.sample(8).unwrap();
         assert_eq!(s.corners, vec![0, 2, 4, 6]);
         assert!(!s.clockwise);
         assert_eq!(s.start[1], DVec2::new(0.0, -1.0));
         let rev: Vec<[f64; 2]> = SQUARE.iter().rev().copied().collect();
-        let s = SweptProfile::new(&rev, None, true, Interpolation::Spline, 0.5)
+        let s = SweptProfile::new(&rev, None, true, Interpolation::Spline, 0.5, &[])
             .unwrap()
             .sample(8)
             .unwrap();
@@ -195,34 +198,43 @@ mod tests {
     #[test]
     fn morph_and_scale_interpolate_between_profiles() {
         let big: Vec<[f64; 2]> = SQUARE.iter().map(|p| [3.0 * p[0], 2.0 * p[1]]).collect();
-        let p = SweptProfile::new(&SQUARE, Some(&big), true, Interpolation::Spline, 0.5).unwrap();
+        let p =
+            SweptProfile::new(&SQUARE, Some(&big), true, Interpolation::Spline, 0.5, &[]).unwrap();
         let s = p.sample(8).unwrap();
         assert_eq!(s.end[1], DVec2::new(0.0, -2.0));
         assert_eq!(s.end[2], DVec2::new(3.0, -2.0));
         let half: Vec<DVec2> = s.at(0.5, 2.0).collect();
         assert_eq!(half[2], DVec2::new(4.0, -3.0));
-        let e = SweptProfile::new(&SQUARE, Some(&big[..3]), true, Interpolation::Spline, 0.5)
-            .unwrap_err();
+        let e = SweptProfile::new(
+            &SQUARE,
+            Some(&big[..3]),
+            true,
+            Interpolation::Spline,
+            0.5,
+            &[],
+        )
+        .unwrap_err();
         assert!(matches!(e, Error::InvalidArgument(m) if m.contains("as many")));
     }
 
     #[test]
     fn crossing_profiles_are_refused() {
         let bow = [[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.0, 1.0]];
-        let e = SweptProfile::new(&bow, None, true, Interpolation::Spline, 0.5).unwrap_err();
+        let e = SweptProfile::new(&bow, None, true, Interpolation::Spline, 0.5, &[]).unwrap_err();
         assert!(
             matches!(e, Error::InvalidArgument(m) if m.contains("crosses itself: segment 0-1 meets segment 2-3"))
         );
-        // The same points open do not cross... but closing them does.
+        // A closed triangle does not cross itself (its closing segment is adjacent to both).
         assert!(SweptProfile::new(
             &[[0.0, 0.0], [1.0, 1.0], [1.0, 0.0]],
             None,
             true,
             Interpolation::Spline,
-            0.5
+            0.5,
+            &[]
         )
         .is_ok());
         let touch = [[0.0, 0.0], [2.0, 0.0], [1.0, 1.0], [1.0, 0.0], [1.0, -1.0]];
-        assert!(SweptProfile::new(&touch, None, false, Interpolation::Spline, 0.5).is_err());
+        assert!(SweptProfile::new(&touch, None, false, Interpolation::Spline, 0.5, &[]).is_err());
     }
 }

@@ -2,13 +2,13 @@
 //!
 //! ```json
 //! { "profile": [[r,z],...], "angle_deg": 360, "samples_profile": 16, "samples_around": 32,
-//!   "interpolation": "spline", "sharp_angle_deg": 30 }
+//!   "interpolation": "spline", "sharp_angle_deg": 30, "corners": [3] }
 //! ```
 //! Only `profile` is required (points from bottom to top, `r ≥ 0`); an unknown key is an
 //! error. Defaults: `angle_deg` = 360 (a full turn, closed; less than 360 leaves boundary
 //! edges along the first and last meridians), `samples_profile` = 16 sample intervals from
 //! bottom to top, `samples_around` = 32 meridian intervals, `interpolation` = `"spline"`,
-//! `sharp_angle_deg` = 30.
+//! `sharp_angle_deg` = 30, `corners` = none (profile point indices forced to be corners).
 //!
 //! *Poles*: a profile end on the axis (`r = 0`) closes the surface there. The profile is
 //! extended by its mirror image across the axis before it is interpolated, so the spline is
@@ -56,6 +56,10 @@ pub struct RevolveInput {
     /// Turning angle (degrees) above which a point is a corner. Default 30.
     #[serde(default = "default_sharp_angle")]
     pub sharp_angle_deg: f64,
+    /// Profile point indices forced to be corners (an end on the axis: a pointed pole).
+    /// Default none.
+    #[serde(default)]
+    pub corners: Vec<usize>,
 }
 
 fn default_angle() -> f64 {
@@ -82,13 +86,16 @@ pub struct RevolvedProfile {
 }
 
 impl RevolvedProfile {
-    /// Validate and interpolate the profile. Errors ([`Error::InvalidArgument`]): those of
+    /// Validate and interpolate the profile; points in `forced` are corners (an end on the
+    /// axis: a pointed pole). Errors ([`Error::InvalidArgument`]): those of
     /// [`SpaceCurve::new`], a negative `r` (the profile crosses the axis), an interior point on
-    /// the axis, a profile that crosses itself, both ends on the axis at the same point.
+    /// the axis, a profile that crosses itself, a forced corner that is neither interior nor an
+    /// end on the axis.
     pub fn new(
         points: &[[f64; 2]],
         interpolation: Interpolation,
         sharp_angle: f64,
+        forced: &[usize],
     ) -> Result<RevolvedProfile> {
         let lifted: Vec<DVec3> = points.iter().map(|p| DVec3::new(p[0], p[1], 0.0)).collect();
         SpaceCurve::new("profile", &lifted, false, Interpolation::Polyline, &[])?;
@@ -129,7 +136,24 @@ impl RevolvedProfile {
                 all.extend(lifted[..n - 1].iter().rev().map(mirror));
             }
         }
-        let corners = detect_corners(&all, closed, sharp_angle);
+        let mut corners = detect_corners(&all, closed, sharp_angle);
+        for &c in forced {
+            if c >= n || ((c == 0 || c == n - 1) && !on_axis[usize::from(c != 0)]) {
+                return Err(Error::invalid_argument(format!(
+                    "profile: corner {c} is not an interior point or an end on the axis \
+                     (0 <= index < {n})"
+                )));
+            }
+            corners.push(first + c);
+            // Its mirror image too, so that the spline stays symmetric about the axis.
+            if c > 0 && c < n - 1 {
+                if on_axis[1] {
+                    corners.push(2 * n - 2 - c);
+                } else if on_axis[0] {
+                    corners.push(n - 1 - c);
+                }
+            }
+        }
         let curve = SpaceCurve::new("profile", &all, closed, interpolation, &corners)?;
         let range = [curve.knots()[first], curve.knots()[first + n - 1]];
         Ok(RevolvedProfile {
@@ -183,6 +207,7 @@ impl RevolveInput {
             samples_around: default_samples_around(),
             interpolation: Interpolation::default(),
             sharp_angle_deg: default_sharp_angle(),
+            corners: Vec::new(),
         }
     }
 
@@ -231,6 +256,7 @@ impl RevolveInput {
             &self.profile,
             self.interpolation,
             self.sharp_angle_deg.to_radians(),
+            &self.corners,
         )
     }
 
@@ -420,6 +446,30 @@ mod tests {
         assert_eq!(g.crease_rings.len(), 1);
         assert_eq!(g.rings[k][0], DVec3::new(1.0, 0.0, 1.0));
         assert!((g.rings[k][4] - DVec3::new(0.0, 1.0, 1.0)).length() < 1e-15);
+    }
+
+    #[test]
+    fn forced_corners_crease_a_ring_and_sharpen_a_pole() {
+        let mut input = RevolveInput::new(semicircle(12, 1.0));
+        input.corners = vec![6, 12];
+        let prof = input.profile_curve().unwrap();
+        assert_eq!(prof.end(0), GridEnd::Smooth);
+        assert_eq!(prof.end(1), GridEnd::Tip(DVec3::new(0.0, 0.0, 1.0)));
+        // The equator ring is creased, and the spline is still symmetric about the axis.
+        let g = input.grid(&prof).unwrap();
+        assert_eq!(g.crease_rings.len(), 1);
+        let equator = &g.rings[g.crease_rings[0]];
+        assert!(equator
+            .iter()
+            .all(|p| p.z.abs() < 1e-15 && (p.length() - 1.0).abs() < 1e-15));
+        let d = prof.curve.eval(prof.range()[0], false).d1;
+        assert!(d.y.abs() < 1e-12 * d.length(), "{d}");
+        input.corners = vec![13];
+        assert!(input.profile_curve().is_err());
+        let mut open = RevolveInput::new(vec![[1.0, 0.0], [1.0, 1.0], [0.5, 2.0]]);
+        open.corners = vec![0];
+        let e = open.profile_curve().unwrap_err();
+        assert!(matches!(e, Error::InvalidArgument(m) if m.contains("corner 0")));
     }
 
     #[test]

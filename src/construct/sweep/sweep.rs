@@ -4,7 +4,8 @@
 //! { "profile": [[a,b],...], "closed_profile": true, "trajectory": [[x,y,z],...],
 //!   "closed_trajectory": false, "frame": "rmf", "samples_profile": 16,
 //!   "samples_trajectory": 32, "scale": [1, 1], "profile_end": [[a,b],...],
-//!   "interpolation": "spline", "sharp_angle_deg": 30 }
+//!   "interpolation": "spline", "sharp_angle_deg": 30,
+//!   "corners": {"profile": [2], "trajectory": [5]} }
 //! ```
 //! Only `profile` and `trajectory` are required; an unknown key is an error. Defaults:
 //! `closed_profile` = `closed_trajectory` = `false`, `frame` = `"rmf"` (or `"fixed"`,
@@ -14,7 +15,8 @@
 //! along the trajectory's length), `profile_end` = none (with it, the profile morphs linearly
 //! into this second profile, which must have the same point count), `interpolation` =
 //! `"spline"` (`"polyline"` takes the points literally), `sharp_angle_deg` = 30 (points turning
-//! by more are corners). Profile coordinates `(a, b)` run along the frame's normal and
+//! by more are corners), `corners` = none (point indices forced to be corners; for an open
+//! curve only interior points). Profile coordinates `(a, b)` run along the frame's normal and
 //! binormal; the profile's origin follows the trajectory.
 //!
 //! Features: a profile corner becomes a column of crease edges along the sweep direction, a
@@ -72,6 +74,21 @@ pub struct SweepInput {
     /// Turning angle (degrees) above which a point is a corner. Default 30.
     #[serde(default = "default_sharp_angle")]
     pub sharp_angle_deg: f64,
+    /// Point indices forced to be corners. Default none.
+    #[serde(default)]
+    pub corners: SweepCorners,
+}
+
+/// Point indices forced to be corners, per curve.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepCorners {
+    /// Corner point indices of the profile (and of `profile_end`).
+    #[serde(default)]
+    pub profile: Vec<usize>,
+    /// Corner point indices of the trajectory.
+    #[serde(default)]
+    pub trajectory: Vec<usize>,
 }
 
 fn default_samples_profile() -> usize {
@@ -141,6 +158,7 @@ impl SweepInput {
             profile_end: None,
             interpolation: Interpolation::default(),
             sharp_angle_deg: default_sharp_angle(),
+            corners: SweepCorners::default(),
         }
     }
 
@@ -197,6 +215,7 @@ impl SweepInput {
             self.closed_profile,
             self.interpolation,
             sharp,
+            &self.corners.profile,
         )?;
         let points: Vec<DVec3> = self.trajectory.iter().map(|&p| DVec3::from(p)).collect();
         let trajectory = Trajectory::new(
@@ -204,7 +223,7 @@ impl SweepInput {
             self.closed_trajectory,
             self.interpolation,
             sharp,
-            &[],
+            &self.corners.trajectory,
         )?;
         let section = profile.sample(self.samples_profile)?;
         let samples = trajectory.samples(self.samples_trajectory, self.frame)?;
@@ -308,6 +327,30 @@ pub(super) mod tests {
         for p in &g.rings[4] {
             assert!((p.x - 2.0 + p.y).abs() < 1e-12, "{p}");
         }
+    }
+
+    #[test]
+    fn forced_corners_give_crease_columns_and_rings() {
+        let mut input = SweepInput::new(
+            vec![[0.0, 0.0], [1.0, 0.0], [2.0, 0.1], [3.0, 0.0]],
+            vec![
+                [0.0, 0.0, 0.0],
+                [0.0, 0.0, 1.0],
+                [0.0, 0.1, 2.0],
+                [0.0, 0.0, 3.0],
+            ],
+        );
+        (input.samples_profile, input.samples_trajectory) = (6, 6);
+        assert!(input.grid().unwrap().crease_columns.is_empty());
+        input.corners = SweepCorners {
+            profile: vec![1],
+            trajectory: vec![2],
+        };
+        let g = input.grid().unwrap();
+        assert_eq!(g.crease_columns, vec![2]);
+        assert_eq!(g.crease_rings, vec![4]);
+        input.corners.trajectory = vec![3];
+        assert!(matches!(input.grid(), Err(Error::InvalidArgument(m)) if m.contains("corner 3")));
     }
 
     #[test]

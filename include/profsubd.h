@@ -941,7 +941,8 @@ const char *profsubd_status_string(int32_t status);
  * Build a surface of revolution: `profile` holds `num_points` points `(r, z)` (2 doubles
  * each), bottom to top, `r >= 0`; they are turned about the z axis. Settings (`options` may
  * be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
- * 16, 32), `profsubd_options_set_revolve_angle` (default 360), and the profile construction's
+ * 16, 32), `profsubd_options_set_revolve_angle` (default 360),
+ * `profsubd_options_set_sweep_corners` (its profile list), and the profile construction's
  * interpolation and sharp angle. Ends on the axis become smooth poles (quad caps) or tips
  * (corner-tagged). The model is fitted, and tagged, for edge-and-corner boundaries and
  * uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings
@@ -958,7 +959,8 @@ enum profsubd_status profsubd_revolve(const double *profile,
  * `trajectory` holds `num_trajectory_points` points `(x, y, z)` (3 doubles each). Settings
  * (`options` may be NULL): `profsubd_options_set_sweep_samples` (profile intervals,
  * trajectory intervals; default 16, 32), `_set_sweep_closed`, `_set_sweep_frame`,
- * `_set_sweep_scale`, `_set_sweep_profile_end`, and the profile construction's interpolation
+ * `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, and the profile
+ * construction's interpolation
  * and sharp angle. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings
  * (coincident points, a crossing profile, a frame that cannot be built...; the message says
  * which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
@@ -1046,6 +1048,18 @@ enum profsubd_status profsubd_options_set_sweep_scale(struct profsubd_options *o
 enum profsubd_status profsubd_options_set_sweep_profile_end(struct profsubd_options *options,
                                                             const double *points,
                                                             size_t num_points);
+
+/**
+ * Set the point indices forced to be corners: `num_profile` indices of profile points
+ * (revolutions and sweeps; for a revolution an end on the axis becomes a pointed pole) and
+ * `num_trajectory` indices of trajectory points (sweeps). Copied; NULL with 0 clears a list.
+ * Indices are checked when the surface is built.
+ */
+enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options *options,
+                                                        const uint32_t *profile_corners,
+                                                        size_t num_profile,
+                                                        const uint32_t *trajectory_corners,
+                                                        size_t num_trajectory);
 
 /**
  * The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare

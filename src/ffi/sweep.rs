@@ -46,6 +46,8 @@ pub struct SweepSettings {
     pub scale: Option<[f64; 2]>,
     /// Profile to morph into.
     pub profile_end: Option<Vec<[f64; 2]>>,
+    /// Point indices forced to be corners: profile, trajectory.
+    pub corners: [Vec<usize>; 2],
 }
 
 /// A built revolution or sweep (opaque): the fitted mesh and the data points. Release with
@@ -82,7 +84,8 @@ unsafe fn settings(options: *const profsubd_options) -> FfiResult<Option<&'stati
 /// Build a surface of revolution: `profile` holds `num_points` points `(r, z)` (2 doubles
 /// each), bottom to top, `r >= 0`; they are turned about the z axis. Settings (`options` may
 /// be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
-/// 16, 32), `profsubd_options_set_revolve_angle` (default 360), and the profile construction's
+/// 16, 32), `profsubd_options_set_revolve_angle` (default 360),
+/// `profsubd_options_set_sweep_corners` (its profile list), and the profile construction's
 /// interpolation and sharp angle. Ends on the axis become smooth poles (quad caps) or tips
 /// (corner-tagged). The model is fitted, and tagged, for edge-and-corner boundaries and
 /// uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings
@@ -105,6 +108,7 @@ pub unsafe extern "C" fn profsubd_revolve(
                 (input.samples_profile, input.samples_around) = (a as usize, b as usize);
             }
             input.angle_deg = s.angle_deg.unwrap_or(input.angle_deg);
+            input.corners = s.corners[0].clone();
         }
         out.write(handle::into_raw(revolve(&input)?));
         Ok(())
@@ -116,7 +120,8 @@ pub unsafe extern "C" fn profsubd_revolve(
 /// `trajectory` holds `num_trajectory_points` points `(x, y, z)` (3 doubles each). Settings
 /// (`options` may be NULL): `profsubd_options_set_sweep_samples` (profile intervals,
 /// trajectory intervals; default 16, 32), `_set_sweep_closed`, `_set_sweep_frame`,
-/// `_set_sweep_scale`, `_set_sweep_profile_end`, and the profile construction's interpolation
+/// `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, and the profile
+/// construction's interpolation
 /// and sharp angle. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings
 /// (coincident points, a crossing profile, a frame that cannot be built...; the message says
 /// which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
@@ -148,6 +153,8 @@ pub unsafe extern "C" fn profsubd_sweep(
             input.frame = s.frame.unwrap_or(input.frame);
             input.scale = s.scale.unwrap_or(input.scale);
             input.profile_end = s.profile_end.clone();
+            input.corners.profile = s.corners[0].clone();
+            input.corners.trajectory = s.corners[1].clone();
         }
         out.write(handle::into_raw(sweep(&input)?));
         Ok(())
@@ -348,6 +355,30 @@ pub unsafe extern "C" fn profsubd_options_set_sweep_profile_end(
         } else {
             Some(tuples::<2>(points, num_points, "points")?)
         };
+        Ok(())
+    })
+}
+
+/// Set the point indices forced to be corners: `num_profile` indices of profile points
+/// (revolutions and sweeps; for a revolution an end on the axis becomes a pointed pole) and
+/// `num_trajectory` indices of trajectory points (sweeps). Copied; NULL with 0 clears a list.
+/// Indices are checked when the surface is built.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_options_set_sweep_corners(
+    options: *mut profsubd_options,
+    profile_corners: *const u32,
+    num_profile: usize,
+    trajectory_corners: *const u32,
+    num_trajectory: usize,
+) -> profsubd_status {
+    set(options, |s| {
+        let list = |p: *const u32, n: usize, name: &str| -> FfiResult<Vec<usize>> {
+            Ok(arg_slice(p, n, name)?.iter().map(|&i| i as usize).collect())
+        };
+        s.corners = [
+            list(profile_corners, num_profile, "profile_corners")?,
+            list(trajectory_corners, num_trajectory, "trajectory_corners")?,
+        ];
         Ok(())
     })
 }

@@ -79,6 +79,11 @@ fn revolve_and_sweep_build_what_the_rust_api_builds() {
             PROFSUBD_OK
         );
         assert_eq!(profsubd_options_set_sweep_scale(o, 1.5, 1.5), PROFSUBD_OK);
+        let (pc, tc) = ([4u32], [6u32]);
+        assert_eq!(
+            profsubd_options_set_sweep_corners(o, pc.as_ptr(), 1, tc.as_ptr(), 1),
+            PROFSUBD_OK
+        );
         let mut s = null_mut();
         assert_eq!(
             profsubd_sweep(p.as_ptr(), 16, tr.as_ptr(), 24, o, &mut s),
@@ -92,7 +97,12 @@ fn revolve_and_sweep_build_what_the_rust_api_builds() {
         (input.closed_profile, input.closed_trajectory) = (true, true);
         input.frame = FrameKind::Frenet;
         input.scale = [1.5, 1.5];
-        assert_eq!(mesh_of(s), sweep(&input).unwrap().mesh);
+        input.corners.profile = vec![4];
+        input.corners.trajectory = vec![6];
+        let expect = sweep(&input).unwrap().mesh;
+        // One crease line along the tube and one crease ring across it.
+        assert_eq!(expect.creases().len(), 16 + 8);
+        assert_eq!(mesh_of(s), expect);
         profsubd_swept_free(s);
         profsubd_options_free(o);
     }
@@ -168,6 +178,22 @@ fn bad_input_gives_a_specific_status_and_no_output() {
         );
         assert_eq!(
             profsubd_options_set_sweep_profile_end(null_mut(), null(), 0),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        // Forced corners: checked at build time.
+        let corners = [5u32];
+        assert_eq!(
+            profsubd_options_set_sweep_corners(o, corners.as_ptr(), 1, null(), 0),
+            PROFSUBD_OK
+        );
+        assert_eq!(
+            profsubd_revolve(line.as_ptr(), 2, o, &mut s),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("corner 5"), "{}", last_error());
+        assert!(s.is_null());
+        assert_eq!(
+            profsubd_options_set_sweep_corners(o, null(), 1, null(), 0),
             PROFSUBD_ERROR_NULL_ARGUMENT
         );
         // A handle of another kind.

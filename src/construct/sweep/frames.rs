@@ -675,6 +675,26 @@ mod tests {
     }
 
     #[test]
+    fn frenet_that_comes_back_reversed_cannot_close() {
+        // A circle whose curvature direction turns half a turn about the tangent on the way
+        // round (synthetic data): the sign-continuous Frenet normal comes back reversed.
+        let n = 48;
+        let pts: Vec<FramePoint> = (0..n)
+            .map(|i| {
+                let t = TAU * i as f64 / n as f64;
+                let tangent = DVec3::new(-t.sin(), t.cos(), 0.0);
+                let inward = -DVec3::new(t.cos(), t.sin(), 0.0);
+                let k = DMat3::from_axis_angle(tangent, t / 2.0) * inward;
+                FramePoint::smooth(DVec3::new(t.cos(), t.sin(), 0.0), tangent, k)
+            })
+            .collect();
+        let e = compute_frames(&pts, true, FrameKind::Frenet).unwrap_err();
+        assert!(matches!(&e, Error::InvalidArgument(m) if m.contains("does not close")));
+        // The rotation-minimizing frame does not look at the curvature and closes.
+        assert!(compute_frames(&pts, true, FrameKind::RotationMinimizing).is_ok());
+    }
+
+    #[test]
     fn frenet_carries_its_frame_across_a_straight_stretch() {
         // A quarter circle in the xy plane (from the origin, heading +y, turning to −x), a
         // straight piece along −x, then a quarter circle bending down (−z): the Frenet normal

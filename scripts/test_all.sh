@@ -121,6 +121,7 @@ example_find_package() {
     cmake --build "$dir" -j "$JOBS"
     "$dir/cube_example" "$dir/cube.obj"
     "$dir/cube_example_static" "$dir/cube_static.obj"
+    "$dir/profile_example" "$dir/profile.obj"
     # The program records the versioned SONAME, not the bare .so name.
     readelf -d "$dir/cube_example" | grep -q 'NEEDED.*\[libprofsubd\.so\.0\]'
 }

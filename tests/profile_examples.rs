@@ -1,5 +1,5 @@
 //! The bundled profile examples: each regenerates to its checked-in OBJ (same topology and
-//! tags, positions within 1e-9 × diagonal), has the promised topology, and the CLI writes
+//! tags, positions within 1e-9 × diagonal) and targets file (the C++ harness reads both), has the promised topology, and the CLI writes
 //! the same mesh plus one target line per vertex; bad input writes nothing.
 
 use std::collections::HashMap;
@@ -64,6 +64,19 @@ fn examples_regenerate_to_their_checked_in_obj_files() {
         let model = build(&input).unwrap();
         let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
         assert_same(&model.mesh, &stored, name);
+        let text = std::fs::read_to_string(example(name, "targets.txt")).unwrap();
+        let stored: Vec<Vec<f64>> = text
+            .lines()
+            .map(|l| l.split(' ').map(|s| s.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(stored.len(), model.targets.len(), "{name}");
+        let tol = 1e-12 * model.mesh.bounding_box_diagonal();
+        for (s, t) in stored.iter().zip(&model.targets) {
+            assert!(
+                (glam::DVec3::from_slice(s) - *t).length() <= tol,
+                "{name}: {t}"
+            );
+        }
         assert!(model.fit.residual <= 1e-10 * model.mesh.bounding_box_diagonal());
         assert!(model.mesh.face_sizes().iter().all(|&n| n == 4));
         let (edges, val) = topology(&model.mesh);

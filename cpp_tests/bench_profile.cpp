@@ -1,0 +1,137 @@
+// Benchmark: the whole profile pipeline (curves -> data points -> cage -> exact limit
+// stencils -> sparse LU fit) at 128 x 64 samples through the C API, against OpenSubdiv
+// building the limit stencil table of the same mesh (Far::TopologyRefiner from the mesh,
+// RefineAdaptive, LimitStencilTableFactoryReal<double> at every control vertex), in the same
+// run. Prints both times (best of 3) and their ratio, and checks that OpenSubdiv's stencils
+// applied to the fitted control points reproduce the targets.
+//
+//   ctest -R bench_profile -V        (or run the bench_profile executable)
+#include "capi_mesh.h"
+#include "osd_shape.h"
+#include "test_support.h"
+
+#include <opensubdiv/far/stencilTableFactory.h>
+#include <opensubdiv/far/topologyLevel.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+using namespace profsubd_test;
+using namespace OpenSubdiv;
+using Clock = std::chrono::steady_clock;
+using LimitTable = Far::LimitStencilTableReal<double>;
+using LimitFactory = Far::LimitStencilTableFactoryReal<double>;
+
+namespace {
+
+double seconds_since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// OpenSubdiv's limit stencil table at every control vertex (corner of its first face),
+// including building the refiner and its adaptive refinement.
+std::unique_ptr<const LimitTable> osd_limit_table(const OsdShape &shape, int isolation) {
+    static const double corner_s[4] = {0, 1, 1, 0}, corner_t[4] = {0, 0, 1, 1};
+    std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(shape);
+    Far::TopologyRefiner::AdaptiveOptions adaptive(isolation);
+    adaptive.useInfSharpPatch = true;  // exact infinitely sharp crease patches
+    refiner->RefineAdaptive(adaptive);
+    const Far::TopologyLevel &level = refiner->GetLevel(0);
+    LimitFactory::LocationArrayVec locations;
+    for (int v = 0; v < level.GetNumVertices(); ++v) {
+        int f = level.GetVertexFaces(v)[0];
+        Far::ConstIndexArray fv = level.GetFaceVertices(f);
+        int c = static_cast<int>(std::find(fv.begin(), fv.end(), v) - fv.begin());
+        LimitFactory::LocationArray a;
+        a.ptexIdx = f;  // all quads: the ptex face is the face
+        a.numLocations = 1;
+        a.s = &corner_s[c];
+        a.t = &corner_t[c];
+        locations.push_back(a);
+    }
+    return std::unique_ptr<const LimitTable>(LimitFactory::Create(*refiner, locations));
+}
+
+}  // namespace
+
+int main() {
+    Checker ck("bench_profile");
+    // The bundled bottle's silhouettes (examples/profiles/bottle.json) at 128 x 64.
+    static const double c1[] = {0, 0, 1.2, 0, 1.25, 1.5, 1.2, 3.0, 0.45, 3.6, 0.4, 4.4, 0.45, 4.6, 0, 4.6};
+    static const double c2[] = {0, 0, 0.8, 0, 0.85, 1.5, 0.8, 3.0, 0.45, 3.6, 0.4, 4.4, 0.45, 4.6, 0, 4.6};
+    profsubd_profile_curves curves{};
+    curves.struct_size = sizeof curves;
+    curves.c1 = c1;
+    curves.c1_points = sizeof c1 / sizeof c1[0] / 2;
+    curves.c2 = c2;
+    curves.c2_points = sizeof c2 / sizeof c2[0] / 2;
+    profsubd_options *raw = nullptr;
+    profsubd_options_new(&raw);
+    OptionsPtr options(raw);
+    profsubd_options_set_around(raw, 128);
+    profsubd_options_set_along(raw, 64);
+
+    double t_profsubd = 1e300;
+    profsubd_profile *model = nullptr;
+    for (int rep = 0; rep < 3; ++rep) {
+        profsubd_profile_free(model);
+        model = nullptr;
+        Clock::time_point t0 = Clock::now();
+        profsubd_status st = profsubd_profile_build(&curves, raw, &model);
+        t_profsubd = std::min(t_profsubd, seconds_since(t0));
+        if (!ck.check(st == PROFSUBD_OK, "profsubd_profile_build: " + describe_status(st))) {
+            return ck.finish();
+        }
+    }
+    profsubd_mesh *mesh = nullptr;
+    profsubd_profile_get_mesh(model, &mesh);
+    MeshPtr owned(mesh);
+    size_t needed = 0;
+    profsubd_profile_get_targets(model, nullptr, 0, &needed);
+    std::vector<double> targets(needed);
+    profsubd_profile_get_targets(model, targets.data(), needed, &needed);
+    profsubd_profile_free(model);
+    CapiMesh capi;
+    std::string err = read_capi_mesh(mesh, &capi);
+    if (!ck.check(err.empty(), "read back: " + err)) {
+        return ck.finish();
+    }
+    OsdShape shape = to_osd_shape(capi, profsubd_default_options());
+
+    for (int isolation : {4, 10}) {
+        double t_osd = 1e300;
+        std::unique_ptr<const LimitTable> table;
+        for (int rep = 0; rep < 3; ++rep) {
+            Clock::time_point t0 = Clock::now();
+            table = osd_limit_table(shape, isolation);
+            t_osd = std::min(t_osd, seconds_since(t0));
+        }
+        // OpenSubdiv's stencils on the fitted points reproduce the targets (darts aside,
+        // where its limit mask is approximate: allow 1e-6 there, report the worst).
+        double worst = 0;
+        for (int v = 0; v < table->GetNumStencils(); ++v) {
+            auto s = table->GetLimitStencil(v);
+            double p[3] = {0, 0, 0};
+            for (int k = 0; k < s.GetSize(); ++k) {
+                for (int d = 0; d < 3; ++d) {
+                    p[d] += s.GetWeights()[k] * capi.positions[3 * s.GetVertexIndices()[k] + d];
+                }
+            }
+            double e = 0;
+            for (int d = 0; d < 3; ++d) {
+                e = std::max(e, std::fabs(p[d] - targets[3 * v + d]));
+            }
+            worst = std::max(worst, e);
+        }
+        std::ostringstream s;
+        s << "128x64 bottle (" << capi.num_vertices << " vertices): profsubd whole pipeline "
+          << t_profsubd * 1e3 << " ms; OpenSubdiv limit stencil table (isolation " << isolation
+          << ") " << t_osd * 1e3 << " ms; ratio profsubd/OpenSubdiv " << t_profsubd / t_osd
+          << "; OpenSubdiv stencils vs targets max " << worst;
+        ck.note(s.str());
+        ck.check(worst < 1e-6, "OpenSubdiv's limit stencils reproduce the targets");
+    }
+    return ck.finish();
+}

@@ -33,7 +33,7 @@ use super::curve::Interpolation;
 use super::frames::FrameKind;
 use super::mesh::grid_mesh;
 use super::profile::SweptProfile;
-use super::trajectory::Trajectory;
+use super::trajectory::{Trajectory, TrajectorySample};
 use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
 use crate::error::{Error, Result};
 use crate::mesh::MeshParts;
@@ -227,16 +227,18 @@ impl SweepInput {
         )?;
         let section = profile.sample(self.samples_profile)?;
         let samples = trajectory.samples(self.samples_trajectory, self.frame)?;
-        let rings = samples
-            .iter()
-            .map(|t| {
-                let scale = self.scale[0] + (self.scale[1] - self.scale[0]) * t.fraction;
-                section
-                    .at(t.fraction, scale)
-                    .map(|p| t.frame.place(p.x, p.y))
-                    .collect()
-            })
-            .collect();
+        let mut rings = Vec::with_capacity(samples.len());
+        for (i, t) in samples.iter().enumerate() {
+            let scale = self.scale[0] + (self.scale[1] - self.scale[0]) * t.fraction;
+            let ring: Vec<DVec3> = section
+                .at(t.fraction, scale)
+                .map(|p| t.frame.place(p.x, p.y))
+                .collect();
+            if self.frame != FrameKind::Fixed {
+                check_no_fold(i, t, &ring)?;
+            }
+            rings.push(ring);
+        }
         Ok(SweepGrid {
             rings,
             ring_closed: section.closed,
@@ -247,6 +249,24 @@ impl SweepInput {
             ends: [GridEnd::Open; 2],
         })
     }
+}
+
+/// Error if a section point lies at or beyond the trajectory's centre of curvature: moving
+/// frames sweep it backwards there, folding the surface (`1 − κ·(d·N) ≤ 0` for the offset `d`).
+fn check_no_fold(i: usize, t: &TrajectorySample, ring: &[DVec3]) -> Result<()> {
+    let worst = ring
+        .iter()
+        .map(|p| (*p - t.frame.origin).dot(t.curvature))
+        .fold(f64::NEG_INFINITY, f64::max);
+    if worst >= 1.0 {
+        return Err(Error::invalid_argument(format!(
+            "the profile reaches past the trajectory's centre of curvature at trajectory sample \
+             {i} (radius of curvature {:.6}): the swept surface would fold; make the profile \
+             smaller or the bend wider",
+            1.0 / t.curvature.length()
+        )));
+    }
+    Ok(())
 }
 
 impl SweepInput {
@@ -327,6 +347,17 @@ pub(super) mod tests {
         for p in &g.rings[4] {
             assert!((p.x - 2.0 + p.y).abs() < 1e-12, "{p}");
         }
+    }
+
+    #[test]
+    fn a_profile_wider_than_the_bend_is_refused() {
+        let mut input = SweepInput::new(circle2(16, 0.5), circle3(24, 2.0));
+        input.closed_profile = true;
+        input.closed_trajectory = true;
+        assert!(input.grid().is_ok());
+        input.profile = circle2(16, 2.2);
+        let e = input.grid().unwrap_err();
+        assert!(matches!(e, Error::InvalidArgument(m) if m.contains("centre of curvature")));
     }
 
     #[test]

@@ -28,6 +28,8 @@ pub struct TrajectorySample {
     pub fraction: f64,
     /// Whether the sample is a trajectory corner (a crease ring goes across it).
     pub corner: bool,
+    /// Curvature vector `κ·N` of the trajectory (leaving the sample at a corner).
+    pub curvature: DVec3,
 }
 
 impl Trajectory {
@@ -88,6 +90,7 @@ impl Trajectory {
             }
         }
         let points: Vec<FramePoint> = fine.iter().map(|c| self.frame_point(c)).collect();
+        let curvature = |i: usize| points[i * FRAME_SUBSTEPS].curvature;
         let frames = compute_frames(&points, closed, kind)?;
         Ok(coarse
             .iter()
@@ -96,6 +99,7 @@ impl Trajectory {
                 frame: frames[i * FRAME_SUBSTEPS],
                 fraction: c.s / len,
                 corner: c.corner,
+                curvature: curvature(i),
             })
             .collect())
     }

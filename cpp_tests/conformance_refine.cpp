@@ -220,11 +220,13 @@ bool compare_with_far(Checker &c, Stats &stats, const std::string &name, const O
     ok &= c.equal(holes.size(), static_cast<size_t>(far_holes), "hole count");
 
     // Creases: every tag equals Far's refined sharpness, and every sharp edge Far does not
-    // derive from topology (boundary, non-manifold) is tagged.
+    // derive from topology (non-manifold; boundary, except under boundary rule "none", where
+    // boundary tags decide the holes) is tagged.
+    const bool boundary_none = o.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_NONE;
     int far_creases = 0;
     for (int e = 0; e < far.GetNumEdges(); ++e) {
-        if (far.GetEdgeSharpness(e) > 0.0f && far.GetEdgeFaces(e).size() == 2 &&
-            !far.IsEdgeNonManifold(e)) {
+        if (far.GetEdgeSharpness(e) > 0.0f && !far.IsEdgeNonManifold(e) &&
+            (far.GetEdgeFaces(e).size() == 2 || boundary_none)) {
             ++far_creases;
         }
     }

@@ -7,12 +7,19 @@ use glam::DVec3;
 use super::step::Refinement;
 use crate::error::Result;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts};
-use crate::options::PartialOptions;
+use crate::options::{BoundaryInterpolation, PartialOptions};
 use crate::topology::Level;
 
 /// Whether an edge's sharpness is written as a tag: sharp, and not sharpened by Far itself.
-fn is_tagged(sharpness: f32, boundary: bool, non_manifold: bool) -> bool {
-    sharpness > 0.0 && !boundary && !non_manifold
+/// Under boundary interpolation *none*, boundary edges are written too: their tags decide
+/// which faces become holes, and the refined level's holes are written explicitly.
+fn is_tagged(
+    sharpness: f32,
+    boundary: bool,
+    non_manifold: bool,
+    rule: BoundaryInterpolation,
+) -> bool {
+    sharpness > 0.0 && !non_manifold && (!boundary || rule == BoundaryInterpolation::None)
 }
 
 /// The crease tags of a complete level, in edge order.
@@ -23,6 +30,7 @@ pub(super) fn creases_of(level: &Level) -> Vec<Crease> {
                 level.edge_sharpness(e),
                 level.is_edge_boundary(e),
                 level.is_edge_non_manifold(e),
+                level.options().boundary,
             )
         })
         .map(|e| Crease {
@@ -40,7 +48,7 @@ pub(super) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
         let (boundary, nm) = (parent.is_edge_boundary(e), parent.is_edge_non_manifold(e));
         for (j, &end) in parent.edge_vertices(e).iter().enumerate() {
             let s = r.child.edge_sharpness(r.edge_child_edge(e, j) as usize);
-            if is_tagged(s, boundary, nm) {
+            if is_tagged(s, boundary, nm, parent.options().boundary) {
                 out.push(Crease {
                     vertices: [r.edge_child_vertex(e), r.vertex_child_vertex(end as usize)],
                     sharpness: s,

@@ -50,45 +50,9 @@ fn close(a: DVec3, b: DVec3) -> bool {
     (a - b).abs().max_element() <= 1e-15
 }
 
-/// Invariants every level must satisfy: local indices point back, face edges join the face's
-/// consecutive vertices, and manifold interior vertices are ordered counter-clockwise.
 fn check_consistency(l: &Level) {
-    for f in 0..l.num_faces() {
-        let (fv, fe) = (l.face_vertices(f), l.face_edges(f));
-        for i in 0..fv.len() {
-            let [a, b] = l.edge_vertices(fe[i] as usize);
-            let (p, q) = (fv[i], fv[(i + 1) % fv.len()]);
-            assert!((a, b) == (p, q) || (a, b) == (q, p), "face {f} edge {i}");
-        }
-    }
-    for e in 0..l.num_edges() {
-        for (&f, &k) in l.edge_faces(e).iter().zip(l.edge_face_local_indices(e)) {
-            assert_eq!(l.face_edges(f as usize)[k as usize] as usize, e);
-        }
-    }
-    for v in 0..l.num_vertices() {
-        for (&f, &k) in l.vertex_faces(v).iter().zip(l.vertex_face_local_indices(v)) {
-            assert_eq!(l.face_vertices(f as usize)[k as usize] as usize, v);
-        }
-        for (&e, &k) in l.vertex_edges(v).iter().zip(l.vertex_edge_local_indices(v)) {
-            assert_eq!(l.edge_vertices(e as usize)[k as usize] as usize, v);
-        }
-        let (faces, edges) = (l.vertex_faces(v), l.vertex_edges(v));
-        if l.is_vertex_non_manifold(v) || l.is_vertex_boundary(v) {
-            continue;
-        }
-        let n = faces.len();
-        assert_eq!(edges.len(), n);
-        for i in 0..n {
-            let fe = l.face_edges(faces[i] as usize);
-            let k = l.vertex_face_local_indices(v)[i] as usize;
-            assert_eq!(fe[k], edges[i], "vertex {v} face {i} leading edge");
-            assert_eq!(
-                fe[(k + fe.len() - 1) % fe.len()],
-                edges[(i + 1) % n],
-                "vertex {v} face {i} trailing edge"
-            );
-        }
+    if let Err(e) = l.validate() {
+        panic!("level {}: {e}", l.depth());
     }
 }
 

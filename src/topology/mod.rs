@@ -9,5 +9,6 @@ mod build;
 mod level;
 #[cfg(test)]
 mod tests;
+mod validate;
 
 pub use level::Level;

@@ -13,6 +13,7 @@
 #include "osd_shape.h"
 #include "test_support.h"
 
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyLevel.h>
@@ -117,8 +118,41 @@ bool profsubd_vertex_limits(const profsubd_mesh *mesh, std::vector<double> *out)
     return st == PROFSUBD_OK;
 }
 
+// OpenMesh takes every face (so every edge and vertex is manifold and the orientation is
+// consistent); a closed model has no boundary edge and Euler characteristic 2.
+void check_openmesh(Checker &ck, const OsdShape &s, bool closed) {
+    using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<>;
+    PolyMesh om;
+    std::vector<PolyMesh::VertexHandle> vh;
+    for (int v = 0; v < s.num_vertices(); ++v) {
+        vh.push_back(om.add_vertex(PolyMesh::Point(0, 0, 0)));
+    }
+    size_t offset = 0;
+    int rejected = 0;
+    for (int n : s.face_sizes) {
+        std::vector<PolyMesh::VertexHandle> face;
+        for (int k = 0; k < n; ++k) {
+            face.push_back(vh[static_cast<size_t>(s.face_indices[offset + k])]);
+        }
+        offset += static_cast<size_t>(n);
+        rejected += om.add_face(face).is_valid() ? 0 : 1;
+    }
+    ck.equal(rejected, 0, "faces OpenMesh rejects as non-manifold");
+    int boundary = 0;
+    for (auto e : om.edges()) {
+        boundary += om.is_boundary(e) ? 1 : 0;
+    }
+    if (closed) {
+        ck.equal(boundary, 0, "OpenMesh boundary edges");
+        long long euler = static_cast<long long>(om.n_vertices()) - static_cast<long long>(om.n_edges()) +
+                          static_cast<long long>(om.n_faces());
+        ck.equal(euler, 2LL, "OpenMesh Euler characteristic");
+    }
+}
+
 void check_model(Checker &ck, Model &m, double *worst_dart) {
     ck.set_context(m.name);
+    check_openmesh(ck, m.shape, m.name != "vase");
     std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(m.shape);
     if (!ck.check(refiner != nullptr, "Far accepts the mesh")) {
         return;

@@ -67,7 +67,8 @@ pub struct ProfileInput {
     /// The −y silhouette `(y, z)`; `None`: the mirror of `c2` about y = 0.
     #[serde(default)]
     pub c4: Option<Vec<[f64; 2]>>,
-    /// Meridians (vertices per ring); a multiple of 4, 4..=[`MAX_SAMPLES`]. Default 16.
+    /// Meridians (vertices per ring); a multiple of 4, 4..=[`MAX_SAMPLES`] (at least 8 when
+    /// a pole is pointed: its tip gets valence `around / 2`). Default 16.
     #[serde(default = "default_around")]
     pub around: u32,
     /// Ring intervals from bottom to top, 1..=[`MAX_SAMPLES`]. Default 12.

@@ -67,6 +67,13 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
     let sil = Silhouettes::new(input)?;
     let param = CommonParam::new(&sil)?;
     let n = input.around as usize;
+    if n < 8 && sil.ends.contains(&EndKind::Tip) {
+        return Err(crate::error::Error::invalid_argument(format!(
+            "around = {n} would give a pointed pole (tip) valence {}: an interior vertex of \
+             valence 2; use around >= 8",
+            n / 2
+        )));
+    }
     let k = n / 4;
     let cap_rings = k.div_ceil(2);
     let rings = Rings::new(&sil, &param, input.along as usize, cap_rings)?;

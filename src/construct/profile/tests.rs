@@ -250,6 +250,9 @@ fn bad_inputs_give_specific_errors() {
     i.along = 2;
     i.around = 32;
     assert!(err(&i).contains("too small"));
+    let mut i = double_cone(1.0, 1.0, 4);
+    i.around = 4;
+    assert!(err(&i).contains("valence 2"));
     let mut i = good.clone();
     i.corners.c1 = vec![40];
     assert!(err(&i).contains("no point 40"));

@@ -1,5 +1,5 @@
 //! `profsubd revolve INPUT.json -o OUT.obj [--targets TARGETS.txt]`: a profile `(r, z)`
-//! turned about the z axis (JSON keys and defaults: [`crate::construct::sweep::revolve`]).
+//! turned about the z axis (JSON keys and defaults: [`crate::construct::sweep::revolve`](mod@crate::construct::sweep::revolve)).
 
 use std::path::PathBuf;
 

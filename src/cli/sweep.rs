@@ -1,5 +1,5 @@
 //! `profsubd sweep INPUT.json -o OUT.obj [--targets TARGETS.txt]`: a planar profile swept
-//! along a 3-D trajectory (JSON keys and defaults: [`crate::construct::sweep::sweep`]).
+//! along a 3-D trajectory (JSON keys and defaults: [`crate::construct::sweep::sweep`](mod@crate::construct::sweep::sweep)).
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -4,8 +4,8 @@
 //! - [`frames`]: fixed, Frenet and rotation-minimizing frames along a sampled trajectory;
 //! - [`profile`]: the swept profile, its samples, scaling and morphing;
 //! - [`trajectory`]: the validated trajectory, its samples and their frames;
-//! - [`sweep`]: the sweep input (JSON) and its grid of data points;
-//! - [`revolve`]: surfaces of revolution (JSON input, poles, grid of data points);
+//! - [`sweep`](mod@sweep): the sweep input (JSON) and its grid of data points;
+//! - [`revolve`](mod@revolve): surfaces of revolution (JSON input, poles, grid of data points);
 //! - [`mesh`]: quad mesh parts of a grid (shared caps and crease tagging);
 //! - [`build`]: the fitted constructions [`revolve`](build::revolve) and [`sweep`](build::sweep).
 

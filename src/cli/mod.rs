@@ -89,7 +89,7 @@ pub enum Command {
     /// Build a surface of revolution: a profile (r, z) turned about the z axis.
     ///
     /// Reads the profile from JSON (bottom to top, r >= 0; angle_deg, samples_profile,
-    /// samples_around, interpolation, sharp_angle_deg), closes ends on the axis with quad
+    /// samples_around, interpolation, sharp_angle_deg, corners), closes ends on the axis with quad
     /// caps (smooth) or a corner tip (pointed), creases rings at profile corners, and fits
     /// the control points so that the exact limit surface passes through every data point.
     Revolve(revolve::RevolveArgs),
@@ -98,7 +98,7 @@ pub enum Command {
     ///
     /// Reads profile and trajectory from JSON (closed_profile, closed_trajectory, frame,
     /// samples_profile, samples_trajectory, scale, profile_end, interpolation,
-    /// sharp_angle_deg), creases profile corners along the sweep and trajectory corners
+    /// sharp_angle_deg, corners), creases profile corners along the sweep and trajectory corners
     /// across it (mitered), and fits the control points so that the exact limit surface
     /// passes through every data point.
     Sweep(sweep::SweepArgs),

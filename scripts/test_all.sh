@@ -122,6 +122,9 @@ example_find_package() {
     "$dir/cube_example" "$dir/cube.obj"
     "$dir/cube_example_static" "$dir/cube_static.obj"
     "$dir/profile_example" "$dir/profile.obj"
+    # The C programs' use of the library is memory-clean.
+    valgrind --error-exitcode=1 --leak-check=full --errors-for-leak-kinds=definite --quiet \
+        "$dir/cube_example" "$dir/cube_valgrind.obj"
     # The program records the versioned SONAME, not the bare .so name.
     readelf -d "$dir/cube_example" | grep -q 'NEEDED.*\[libprofsubd\.so\.0\]'
 }

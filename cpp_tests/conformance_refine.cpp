@@ -1,8 +1,8 @@
 // Conformance of profsubd's uniform refinement (C API: profsubd_refine_uniform) with
 // OpenSubdiv 3.5's Far (TopologyRefiner::RefineUniform + PrimvarRefinerReal<double>::Interpolate),
-// index by index: vertex positions within 1e-12 x the bounding-box diagonal, face-vertex
-// lists identical, hole tags identical, and the crease/corner tags of the refined mesh equal to
-// Far's refined sharpness. Run over every shape of the OpenSubdiv shapes folder under each
+// index by index (both of Far's vertex orders): vertex positions within 1e-12 x the
+// bounding-box diagonal, face-vertex lists identical, hole tags identical, and the
+// crease/corner tags of the refined mesh equal to Far's refined sharpness. Run over every shape of the OpenSubdiv shapes folder under each
 // boundary rule and crease method, and over randomized meshes (valences 2-8, darts,
 // semi-sharp and fractional sharpness on edges and vertices, boundaries, holes,
 // triangles with both triangle rules), levels 1-3.
@@ -104,7 +104,7 @@ struct Stats {
 
 // profsubd through the C API, every option explicit.
 profsubd_test::MeshPtr refine_profsubd(Checker &c, const OsdShape &s, const Sdc::Options &o,
-                                       uint32_t level) {
+                                       uint32_t level, bool faces_first = false) {
     std::string err;
     profsubd_test::MeshPtr base = profsubd_test::new_mesh_capi(s, &err);
     if (!c.check(base != nullptr, "profsubd_mesh_new: " + err)) return {};
@@ -119,6 +119,7 @@ profsubd_test::MeshPtr refine_profsubd(Checker &c, const OsdShape &s, const Sdc:
         raw, o.GetTriangleSubdivision() == Sdc::Options::TRI_SUB_SMOOTH
                  ? PROFSUBD_TRIANGLES_SMOOTH
                  : PROFSUBD_TRIANGLES_CATMARK);
+    if (faces_first) profsubd_options_set_vertex_order(raw, PROFSUBD_ORDER_FACES_FIRST);
     profsubd_mesh *out = nullptr;
     profsubd_status st = profsubd_refine_uniform(base.get(), raw, level, &out);
     if (!c.check(st == PROFSUBD_OK,
@@ -130,12 +131,12 @@ profsubd_test::MeshPtr refine_profsubd(Checker &c, const OsdShape &s, const Sdc:
 
 // Compares profsubd's level-`level` refinement of `s` with Far's; returns false on failure.
 bool compare_with_far(Checker &c, Stats &stats, const std::string &name, const OsdShape &s,
-                      const Sdc::Options &o, int level) {
+                      const Sdc::Options &o, int level, bool faces_first = false) {
     std::ostringstream ctx;
     ctx << name << " boundary=" << boundary_name(o.GetVtxBoundaryInterpolation())
         << " crease=" << (o.GetCreasingMethod() == Sdc::Options::CREASE_CHAIKIN ? "chaikin" : "uniform")
         << " triangles=" << (o.GetTriangleSubdivision() == Sdc::Options::TRI_SUB_SMOOTH ? "smooth" : "catmark")
-        << " level=" << level;
+        << " level=" << level << (faces_first ? " faces-first" : "");
     c.set_context(ctx.str());
     ++stats.cases;
 
@@ -143,6 +144,7 @@ bool compare_with_far(Checker &c, Stats &stats, const std::string &name, const O
     if (!c.check(refiner != nullptr, "Far rejected the mesh")) return false;
     Far::TopologyRefiner::UniformOptions uo(level);
     uo.fullTopologyInLastLevel = true;
+    uo.orderVerticesFromFacesFirst = faces_first;
     refiner->RefineUniform(uo);
     std::vector<Vertex> buf(refiner->GetNumVerticesTotal());
     for (int i = 0; i < s.num_vertices(); ++i) {
@@ -157,7 +159,7 @@ bool compare_with_far(Checker &c, Stats &stats, const std::string &name, const O
     }
     const Far::TopologyLevel &far = refiner->GetLevel(level);
 
-    profsubd_test::MeshPtr mine = refine_profsubd(c, s, o, static_cast<uint32_t>(level));
+    profsubd_test::MeshPtr mine = refine_profsubd(c, s, o, static_cast<uint32_t>(level), faces_first);
     if (!mine) return false;
     profsubd_test::CapiMesh m;
     std::string err = profsubd_test::read_capi_mesh(mine.get(), &m);
@@ -496,7 +498,8 @@ void compare_with_openmesh(Checker &c, Stats &stats, const std::string &name, co
     c.check(missing == 0, "point sets agree");
 }
 
-// Every boundary rule and crease method (the file's triangle rule), levels 1-3, against Far;
+// Every boundary rule and crease method (the file's triangle rule), levels 1-3, against Far,
+// and level 2 with faces-first vertex order;
 // levels 1-2 against OpenMesh where it applies. Returns 1 if OpenMesh was compared.
 int compare_file(Checker &c, Stats &far_stats, Stats &om_stats, const std::string &name,
                  const OsdShape &s) {
@@ -509,6 +512,8 @@ int compare_file(Checker &c, Stats &far_stats, Stats &om_stats, const std::strin
             for (int level = 1; level <= 3; ++level) compare_with_far(c, far_stats, name, s, o, level);
         }
     }
+    // Far's other vertex order (orderVerticesFromFacesFirst), with the file's options.
+    compare_with_far(c, far_stats, name, s, s.options, 2, true);
     if (!openmesh_applies(s, s.options)) return 0;
     for (int level = 1; level <= 2; ++level) compare_with_openmesh(c, om_stats, name, s, s.options, level);
     return 1;

@@ -203,6 +203,20 @@ typedef enum profsubd_sweep_frame {
 } profsubd_sweep_frame;
 
 /**
+ * Values for `profsubd_options_set_vertex_order` (passed as `int32_t`).
+ */
+typedef enum profsubd_vertex_order {
+    /**
+     * Children of vertices, then of faces, then of edges (Far's default; the default).
+     */
+    PROFSUBD_ORDER_VERTICES_FIRST = 0,
+    /**
+     * Children of faces, then of edges, then of vertices (Far's `orderVerticesFromFacesFirst`).
+     */
+    PROFSUBD_ORDER_FACES_FIRST = 1,
+} profsubd_vertex_order;
+
+/**
  * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
  * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
@@ -913,18 +927,28 @@ enum profsubd_status profsubd_options_set_interpolation(struct profsubd_options 
 enum profsubd_status profsubd_options_set_caps(struct profsubd_options *options, int32_t caps);
 
 /**
+ * Set the order of the vertices of refined meshes (`PROFSUBD_ORDER_VERTICES_FIRST`, the
+ * default, or `PROFSUBD_ORDER_FACES_FIRST`). Errors: `PROFSUBD_ERROR_NULL_ARGUMENT`,
+ * `PROFSUBD_ERROR_INVALID_HANDLE`, `PROFSUBD_ERROR_INVALID_ARGUMENT` for another value
+ * (the setting is then unchanged).
+ */
+enum profsubd_status profsubd_options_set_vertex_order(struct profsubd_options *options,
+                                                       int32_t order);
+
+/**
  * Refine `mesh` uniformly `level` times (0 to 8) with Catmull-Clark; `*out` receives the
  * refined mesh, which the caller releases with `profsubd_mesh_free`.
  *
  * `options` may be NULL: the mesh's tags and the defaults apply. The refined mesh is in
  * OpenSubdiv Far's order (`TopologyRefiner::RefineUniform`): vertices are the children of
- * the vertices, then of the faces, then of the edges; faces are the quads of each parent
- * face in turn; positions equal `PrimvarRefinerReal<double>::Interpolate`. It carries the
- * decayed crease and corner sharpness, the holes and the options used as tags.
+ * the vertices, then of the faces, then of the edges (or faces, edges, vertices with
+ * `PROFSUBD_ORDER_FACES_FIRST`); faces are the quads of each parent face in turn; positions
+ * equal `PrimvarRefinerReal<double>::Interpolate`. It carries the decayed crease and corner
+ * sharpness, the holes and the options used as tags.
  *
  * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` (mesh or out NULL), `PROFSUBD_ERROR_INVALID_HANDLE`,
  * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a level above 8 or a refined mesh above 2^26 face
- * indices (a memory bound), or an out-of-range option.
+ * indices (a memory bound).
  */
 enum profsubd_status profsubd_refine_uniform(const struct profsubd_mesh *mesh,
                                              const struct profsubd_options *options,

@@ -9,9 +9,9 @@ use profsubd::ffi::mesh::{mesh_arg, new_mesh_handle, profsubd_mesh, profsubd_mes
 use profsubd::ffi::options::{
     profsubd_options, profsubd_options_free, profsubd_options_new, profsubd_options_set_boundary,
 };
-use profsubd::ffi::refine::profsubd_refine_uniform;
+use profsubd::ffi::refine::{profsubd_options_set_vertex_order, profsubd_refine_uniform};
 use profsubd::ffi::status::profsubd_status::{self, *};
-use profsubd::refine::refine_uniform;
+use profsubd::refine::{refine_uniform, refine_uniform_ordered, VertexOrder};
 use profsubd::{BoundaryInterpolation, Mesh, MeshParts, SubdivOptions};
 
 fn quad() -> Mesh {
@@ -97,6 +97,40 @@ fn bad_input_gives_a_status_and_no_output() {
         let (st, out) = refine(o.cast(), ptr::null(), 1);
         assert_eq!(st, PROFSUBD_ERROR_INVALID_HANDLE);
         assert!(out.is_null());
+        profsubd_options_free(o);
+        profsubd_mesh_free(m);
+    }
+}
+
+#[test]
+fn vertex_order_setting() {
+    unsafe {
+        let m = new_mesh_handle(quad());
+        let mut o: *mut profsubd_options = ptr::null_mut();
+        assert_eq!(profsubd_options_new(&mut o), PROFSUBD_OK);
+        assert_eq!(
+            profsubd_options_set_vertex_order(o, 2),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("vertex order value 2"));
+        assert_eq!(
+            profsubd_options_set_vertex_order(ptr::null_mut(), 1),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        assert_eq!(profsubd_options_set_vertex_order(o, 1), PROFSUBD_OK);
+        let (st, out) = refine(m, o, 2);
+        assert_eq!(st, PROFSUBD_OK);
+        let expected = refine_uniform_ordered(
+            &quad(),
+            &SubdivOptions::default(),
+            2,
+            VertexOrder::FacesFirst,
+        )
+        .unwrap();
+        assert_eq!(mesh_arg(out, "out").unwrap(), &expected);
+        // Faces first: vertex 0 is the face point of the first level-1 quad.
+        assert_eq!(expected.positions()[0], DVec3::new(0.25, 0.25, 0.0));
+        profsubd_mesh_free(out);
         profsubd_options_free(o);
         profsubd_mesh_free(m);
     }

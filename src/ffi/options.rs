@@ -63,6 +63,8 @@ pub struct OptionsData {
     pub profile: crate::ffi::profile::ProfileSettings,
     /// Revolution and sweep settings (`src/ffi/sweep.rs`).
     pub sweep: crate::ffi::sweep::SweepSettings,
+    /// Uniform refinement settings (`src/ffi/refine.rs`).
+    pub refine: crate::ffi::refine::RefineSettings,
 }
 
 impl Handle for profsubd_options {

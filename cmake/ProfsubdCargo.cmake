@@ -11,6 +11,10 @@ set(PROFSUBD_CARGO_PROFILE "release" CACHE STRING "cargo profile used to build t
 set(PROFSUBD_CARGO_TARGET_DIR "${CMAKE_SOURCE_DIR}/target" CACHE PATH
     "cargo target directory (shared with plain cargo builds to avoid compiling twice)")
 option(PROFSUBD_CARGO_OFFLINE "Pass --offline to cargo" OFF)
+# E.g. --tests: cargo then resolves features as `cargo test` does (dev-dependencies unify
+# some features), so a build tree shared with `cargo test --release` reuses its library
+# instead of compiling a second variant. scripts/test_all.sh does this.
+set(PROFSUBD_CARGO_EXTRA_ARGS "" CACHE STRING "Extra arguments for cargo build (a ;-list)")
 
 if(PROFSUBD_CARGO_PROFILE STREQUAL "dev")
   set(_profsubd_profile_dir debug)
@@ -29,6 +33,7 @@ set(_profsubd_cargo_args build --lib --profile ${PROFSUBD_CARGO_PROFILE}
 if(PROFSUBD_CARGO_OFFLINE)
   list(APPEND _profsubd_cargo_args --offline)
 endif()
+list(APPEND _profsubd_cargo_args ${PROFSUBD_CARGO_EXTRA_ARGS})
 
 # Always runs: cargo itself decides whether anything is out of date.
 add_custom_target(profsubd_cargo ALL

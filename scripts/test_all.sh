@@ -84,7 +84,8 @@ rust_clippy() { cargo clippy --all-targets -- -D warnings; }
 rust_test() { cargo test --release; }
 
 cmake_build() {
-    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+    # --tests: same feature resolution as `cargo test`, so its release library is reused.
+    cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release -DPROFSUBD_CARGO_EXTRA_ARGS=--tests
     cmake --build "$BUILD_DIR" -j "$JOBS"
 }
 

@@ -27,6 +27,14 @@ use crate::refine::refine_uniform;
 /// Depth to which irregular faces are refined and cached at construction.
 pub const CACHE_DEPTH: u32 = 5;
 
+/// Depth to which the faces around a face that repeats a vertex are cached (see
+/// [`Evaluator::build_from_root`]), as long as the refined fragment stays within
+/// [`DEGENERATE_BUDGET`] faces.
+pub const DEGENERATE_DEPTH: u32 = 6;
+
+/// Largest refined fragment (faces) [`Evaluator::build_from_root`] builds.
+const DEGENERATE_BUDGET: usize = 16_384;
+
 /// Deepest on-the-spot refinement; a point still not in a regular sub-patch there is within
 /// `2^-MAX_DEPTH` of a vertex and takes that vertex's limit.
 const MAX_DEPTH: u32 = 96;
@@ -86,16 +94,29 @@ impl Evaluator {
                 }
                 continue;
             }
-            if size == 4 {
+            let around = global.around_face(f as u32);
+            if around.has_face_repeating_a_vertex() {
+                let root = around.to_mesh(options)?;
+                let mut levels = vec![around];
+                for k in 0..(if size == 4 { 1 } else { size }) {
+                    let node = if size == 4 {
+                        ev.build_from_root(&root, &mut levels, 0, 0)?
+                    } else {
+                        ev.build_from_root(&root, &mut levels, 1, k)?
+                    };
+                    let n = ev.push_node(node);
+                    ev.roots.push(n);
+                }
+            } else if size == 4 {
                 let node = match regular_patch(&global, f as u32, options) {
                     Some(p) => ev.leaf(p),
-                    None => ev.build(global.around_face(f as u32), 0)?,
+                    None => ev.build(around, 0)?,
                 };
                 let n = ev.push_node(node);
                 ev.roots.push(n);
             } else {
                 // A non-quad's sub-faces are its children after one refinement, in corner order.
-                let refined = refine_once(&global.around_face(f as u32), options)?;
+                let refined = refine_once(&around, options)?;
                 for k in 0..size {
                     let node = ev.build(refined.around_face(k), 1)?;
                     let n = ev.push_node(node);
@@ -150,6 +171,45 @@ impl Evaluator {
         self.nodes.extend([Node::NoSurface; 4]);
         for q in 0..4u32 {
             let child = self.build(refined.around_face(q), depth + 1)?;
+            self.nodes[(first + q) as usize] = child;
+        }
+        Ok(Node::Split(first))
+    }
+
+    /// Like [`Evaluator::build`] for face `index` of level `depth` of `root` (whose face 0 is
+    /// the control face), when `root` holds a face that repeats a vertex. Refining such a
+    /// face makes two distinct edges join the same two vertices, which a re-extracted
+    /// fragment would merge; so every level is refined from `root` itself (`levels[d]` =
+    /// `root` refined `d` times, computed on first use), down to [`DEGENERATE_DEPTH`].
+    /// Deeper nodes (or all nodes below the depth where the fragment would pass
+    /// [`DEGENERATE_BUDGET`] faces) are refined level by level like the others, which is
+    /// exact unless the point is within `2^-depth` of a corner next to the repeated vertex.
+    fn build_from_root(
+        &mut self,
+        root: &Mesh,
+        levels: &mut Vec<Neighbourhood>,
+        depth: u32,
+        index: u32,
+    ) -> Result<Node> {
+        while levels.len() <= depth as usize {
+            let refined = refine_uniform(root, &self.options, levels.len() as u32)?;
+            levels.push(Neighbourhood::from_mesh(&refined));
+        }
+        let nb = levels[depth as usize].around_face(index);
+        if let Some(p) = regular_patch(&nb, 0, &self.options) {
+            return Ok(self.leaf(p));
+        }
+        let next_size = levels[depth as usize].num_faces() * 4;
+        if depth >= DEGENERATE_DEPTH
+            || (levels.len() <= depth as usize + 1 && next_size > DEGENERATE_BUDGET)
+        {
+            self.deep.push(nb);
+            return Ok(Node::Deep((self.deep.len() - 1) as u32));
+        }
+        let first = self.nodes.len() as u32;
+        self.nodes.extend([Node::NoSurface; 4]);
+        for q in 0..4u32 {
+            let child = self.build_from_root(root, levels, depth + 1, index * 4 + q)?;
             self.nodes[(first + q) as usize] = child;
         }
         Ok(Node::Split(first))

@@ -127,8 +127,38 @@ fn is_infinite(s: f32) -> bool {
     s >= SHARPNESS_INFINITE
 }
 
-/// Classify corner `k` of quad `f`.
+/// Classify corner `k` of quad `f`; a seemingly regular corner whose faces overlap in more
+/// than an edge is irregular (see [`faces_overlap`]).
 fn corner_kind(nb: &Neighbourhood, f: u32, k: usize, options: &SubdivOptions) -> CornerKind {
+    match corner_kind_by_counts(nb, f, k, options) {
+        CornerKind::Irregular => CornerKind::Irregular,
+        _ if faces_overlap(nb, nb.face(f)[k]) => CornerKind::Irregular,
+        kind => kind,
+    }
+}
+
+/// True when two faces at `c` share more than two vertices. That happens below a face that
+/// repeats a vertex: its children meet along two distinct edges joining the same pair of
+/// vertices, which a fragment keyed by vertex pairs cannot tell from one manifold edge.
+fn faces_overlap(nb: &Neighbourhood, c: u32) -> bool {
+    let faces = nb.vertex_faces(c);
+    for (i, &a) in faces.iter().enumerate() {
+        for &b in &faces[i + 1..] {
+            let shared = nb.face(a).iter().filter(|x| nb.face(b).contains(x)).count();
+            if a == b || shared > 2 {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+fn corner_kind_by_counts(
+    nb: &Neighbourhood,
+    f: u32,
+    k: usize,
+    options: &SubdivOptions,
+) -> CornerKind {
     let face = nb.face(f);
     let c = face[k];
     let next = face[(k + 1) % 4];

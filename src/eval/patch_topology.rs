@@ -130,6 +130,14 @@ impl Neighbourhood {
         self.positions[v as usize]
     }
 
+    /// True when some face lists a vertex twice (degenerate faces of non-manifold inputs).
+    pub fn has_face_repeating_a_vertex(&self) -> bool {
+        (0..self.num_faces() as u32).any(|f| {
+            let face = self.face(f);
+            (0..face.len()).any(|i| face[i + 1..].contains(&face[i]))
+        })
+    }
+
     /// The faces sharing a vertex with face `f`, as a new fragment whose face 0 is `f` and
     /// whose vertices 0..n are `f`'s vertices in order.
     pub fn around_face(&self, f: u32) -> Neighbourhood {

@@ -1,0 +1,340 @@
+// Benchmark: profsubd vs OpenSubdiv 3.5, single thread, double precision, same process.
+//
+// Mesh: OpenSubdiv's catmark_car refined once by Far (6,300 quads with extraordinary
+// vertices, infinitely sharp creases and a boundary), or the OBJ given as argv[1] (refined
+// once too). Built by cmake, not run by ctest: `cmake --build build --target bench_eval &&
+// build/cpp_tests/bench_eval [mesh.obj]`.
+//
+// P1: 10^6 random (face, u, v) -> position + du + dv.
+//     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
+//     (points in random order, and grouped by face), vs Far::PatchTable + PatchMap.
+//     Build times (evaluator, factory, adaptive refinement + patch table) reported apart.
+// P2: uniform refinement to level 3, topology + positions: profsubd_refine_uniform vs
+//     Far::TopologyRefiner::RefineUniform + PrimvarRefinerReal<double>::Interpolate
+//     (TopologyRefiner construction included on both sides), time and peak memory (each run
+//     in a forked child; peak resident memory above the child's start).
+
+#include "capi_mesh.h"
+#include "osd_shape.h"
+#include "test_support.h"
+
+#include <profsubd.h>
+
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/patchMap.h>
+#include <opensubdiv/far/patchTable.h>
+#include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <random>
+
+using namespace OpenSubdiv;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+struct Pt {
+    double p[3];
+    void Clear() { p[0] = p[1] = p[2] = 0; }
+    void AddWithWeight(Pt const &s, double w) {
+        p[0] += w * s.p[0];
+        p[1] += w * s.p[1];
+        p[2] += w * s.p[2];
+    }
+};
+
+double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
+
+// Best of `reps` runs of f (seconds).
+double best(int reps, const std::function<void()> &f) {
+    double b = 1e300;
+    for (int r = 0; r < reps; ++r) {
+        auto t = Clock::now();
+        f();
+        b = std::min(b, seconds(t));
+    }
+    return b;
+}
+
+long rss_kb() {
+    FILE *f = std::fopen("/proc/self/statm", "r");
+    long pages = 0, resident = 0;
+    if (f) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+        std::fclose(f);
+    }
+    return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+// Runs f in a child process; returns its peak resident memory above its start, in MiB.
+double peak_mib(const std::function<void()> &f) {
+    int fd[2];
+    if (pipe(fd) != 0) return -1;
+    pid_t pid = fork();
+    if (pid == 0) {
+        long start = rss_kb();
+        f();
+        ssize_t w = write(fd[1], &start, sizeof start);
+        (void)w;
+        _exit(0);
+    }
+    long start = 0;
+    ssize_t r = read(fd[0], &start, sizeof start);
+    (void)r;
+    int status = 0;
+    struct rusage ru;
+    wait4(pid, &status, 0, &ru);
+    close(fd[0]);
+    close(fd[1]);
+    return (ru.ru_maxrss - start) / 1024.0;
+}
+
+// The shape refined once by Far, as a new OsdShape (creases and corners at level 1).
+profsubd_test::OsdShape refine_once(const profsubd_test::OsdShape &s) {
+    auto refiner = profsubd_test::build_refiner(s);
+    Far::TopologyRefiner::UniformOptions uo(1);
+    uo.fullTopologyInLastLevel = true;
+    refiner->RefineUniform(uo);
+    std::vector<Pt> pts(refiner->GetNumVerticesTotal());
+    for (int v = 0; v < s.num_vertices(); ++v)
+        for (int k = 0; k < 3; ++k) pts[v].p[k] = s.positions[3 * v + k];
+    Pt *src = pts.data(), *dst = pts.data() + s.num_vertices();
+    Far::PrimvarRefinerReal<double>(*refiner).Interpolate(1, src, dst);
+    const Far::TopologyLevel &l = refiner->GetLevel(1);
+    profsubd_test::OsdShape out;
+    out.options = s.options;
+    for (int v = 0; v < l.GetNumVertices(); ++v)
+        for (int k = 0; k < 3; ++k) out.positions.push_back(pts[s.num_vertices() + v].p[k]);
+    for (int f = 0; f < l.GetNumFaces(); ++f) {
+        auto fv = l.GetFaceVertices(f);
+        out.face_sizes.push_back(fv.size());
+        for (int k = 0; k < fv.size(); ++k) out.face_indices.push_back(fv[k]);
+    }
+    for (int e = 0; e < l.GetNumEdges(); ++e) {
+        float sh = l.GetEdgeSharpness(e);
+        if (sh > 0 && !l.IsEdgeBoundary(e)) {
+            auto ev = l.GetEdgeVertices(e);
+            out.crease_vertices.push_back(ev[0]);
+            out.crease_vertices.push_back(ev[1]);
+            out.crease_sharpness.push_back(sh);
+        }
+    }
+    for (int v = 0; v < l.GetNumVertices(); ++v) {
+        float sh = l.GetVertexSharpness(v);
+        if (sh > 0 && !(l.IsVertexBoundary(v) && l.GetVertexFaces(v).size() == 1)) {
+            out.corner_vertices.push_back(v);
+            out.corner_sharpness.push_back(sh);
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    std::string path = argc > 1 ? argv[1] : profsubd_test::osd_shapes_dir() + "/catmark_car.obj";
+    profsubd_test::OsdShape base;
+    std::string err;
+    if (!profsubd_test::read_osd_shape(path, &base, &err)) {
+        std::fprintf(stderr, "bench_eval: %s: %s\n", path.c_str(), err.c_str());
+        return 1;
+    }
+    profsubd_test::OsdShape shape = refine_once(base);
+    std::printf("mesh: %s refined once: %d vertices, %d faces, %zu creases, %zu corners\n", path.c_str(),
+                shape.num_vertices(), shape.num_faces(), shape.crease_sharpness.size(),
+                shape.corner_sharpness.size());
+
+    profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
+    if (!mesh) {
+        std::fprintf(stderr, "bench_eval: %s\n", err.c_str());
+        return 1;
+    }
+    profsubd_options *opts = nullptr;
+    profsubd_options_new(&opts);
+    profsubd_options_set_boundary(opts, shape.options.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_NONE
+                                            ? PROFSUBD_BOUNDARY_NONE
+                                        : shape.options.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
+                                            ? PROFSUBD_BOUNDARY_EDGE_ONLY
+                                            : PROFSUBD_BOUNDARY_EDGE_AND_CORNER);
+
+    const int N = 1000000;
+    const int nf = shape.num_faces();
+    std::mt19937_64 rng(7);
+    std::uniform_int_distribution<int> pick(0, nf - 1);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<uint32_t> faces(N);
+    std::vector<double> us(N), vs(N);
+    for (int i = 0; i < N; ++i) {
+        faces[i] = (uint32_t)pick(rng);
+        us[i] = unit(rng);
+        vs[i] = unit(rng);
+    }
+    std::vector<double> P(3 * N), DU(3 * N), DV(3 * N);
+    double checksum = 0;
+
+    // --- P1: profsubd.
+    profsubd_evaluator *ev = nullptr;
+    double t_build_ps = best(3, [&] {
+        if (ev) profsubd_evaluator_free(ev);
+        profsubd_evaluator_new(mesh.get(), opts, &ev);
+    });
+    double t_eval_ps = best(3, [&] {
+        profsubd_status st = profsubd_evaluator_evaluate(ev, faces.data(), us.data(), vs.data(), N, P.data(),
+                                                         DU.data(), DV.data());
+        if (st != PROFSUBD_OK) std::fprintf(stderr, "evaluate: %s\n", profsubd_last_error_message());
+    });
+    std::vector<double> Pps = P;
+    checksum += P[0];
+
+    // --- P1: Bfr with its cache.
+    auto refiner = profsubd_test::build_refiner(shape);
+    using Factory = Bfr::RefinerSurfaceFactory<>;
+    Factory::Options fo;
+    std::unique_ptr<Factory> factory;
+    double t_build_bfr = best(3, [&] { factory.reset(new Factory(*refiner, fo)); });
+    Bfr::Surface<double> surface;
+    std::vector<double> patch;
+    auto bfr_point = [&](int i) {
+        double uv[2] = {us[i], vs[i]};
+        surface.Evaluate(uv, patch.data(), 3, &P[3 * i], &DU[3 * i], &DV[3 * i]);
+    };
+    // Random order: a fresh surface per point, as a caller with random queries would do.
+    double t_eval_bfr = best(3, [&] {
+        factory.reset(new Factory(*refiner, fo));  // cold cache each run, like profsubd's build
+        for (int i = 0; i < N; ++i) {
+            factory->InitVertexSurface(faces[i], &surface);
+            patch.resize(3 * surface.GetNumPatchPoints());
+            surface.PreparePatchPoints(shape.positions.data(), 3, patch.data(), 3);
+            bfr_point(i);
+        }
+    });
+    double maxdiff = 0;
+    for (int i = 0; i < 3 * N; ++i) maxdiff = std::max(maxdiff, std::fabs(P[i] - Pps[i]));
+    std::vector<int> order(N);
+    for (int i = 0; i < N; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return faces[a] < faces[b]; });
+    double t_eval_bfr_grouped = best(3, [&] {
+        int current = -1;
+        for (int i : order) {
+            if ((int)faces[i] != current) {
+                current = faces[i];
+                factory->InitVertexSurface(current, &surface);
+                patch.resize(3 * surface.GetNumPatchPoints());
+                surface.PreparePatchPoints(shape.positions.data(), 3, patch.data(), 3);
+            }
+            bfr_point(i);
+        }
+    });
+    checksum += P[3];
+
+    // --- P1: Far PatchTable + PatchMap.
+    std::unique_ptr<Far::TopologyRefiner> adaptive;
+    std::unique_ptr<Far::PatchTable> table;
+    std::unique_ptr<Far::PatchMap> pmap;
+    std::vector<Pt> pp;
+    double t_build_far = best(3, [&] {
+        adaptive = profsubd_test::build_refiner(shape);
+        Far::PatchTableFactory::Options po;
+        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+        adaptive->RefineAdaptive(po.GetRefineAdaptiveOptions());
+        table.reset(Far::PatchTableFactory::Create(*adaptive, po));
+        pmap.reset(new Far::PatchMap(*table));
+        int nref = adaptive->GetNumVerticesTotal();
+        pp.assign(nref + table->GetNumLocalPoints(), Pt());
+        for (int v = 0; v < shape.num_vertices(); ++v)
+            for (int k = 0; k < 3; ++k) pp[v].p[k] = shape.positions[3 * v + k];
+        Far::PrimvarRefinerReal<double> pr(*adaptive);
+        Pt *src = pp.data();
+        for (int lev = 1; lev <= adaptive->GetMaxLevel(); ++lev) {
+            Pt *dst = src + adaptive->GetLevel(lev - 1).GetNumVertices();
+            pr.Interpolate(lev, src, dst);
+            src = dst;
+        }
+        if (table->GetNumLocalPoints() > 0) table->ComputeLocalPointValues(pp.data(), pp.data() + nref);
+    });
+    double t_eval_far = best(3, [&] {
+        double wp[20], wu[20], wv[20];
+        for (int i = 0; i < N; ++i) {
+            const Far::PatchTable::PatchHandle *h = pmap->FindPatch(faces[i], us[i], vs[i]);
+            table->EvaluateBasis(*h, us[i], vs[i], wp, wu, wv);
+            auto cvs = table->GetPatchVertices(*h);
+            double p[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
+            for (int k = 0; k < cvs.size(); ++k) {
+                const double *c = pp[cvs[k]].p;
+                for (int d = 0; d < 3; ++d) {
+                    p[d] += wp[k] * c[d];
+                    du[d] += wu[k] * c[d];
+                    dv[d] += wv[k] * c[d];
+                }
+            }
+            for (int d = 0; d < 3; ++d) {
+                P[3 * i + d] = p[d];
+                DU[3 * i + d] = du[d];
+                DV[3 * i + d] = dv[d];
+            }
+        }
+    });
+    checksum += P[6];
+
+    std::printf("\nP1: %d random (face,u,v), position + du + dv (best of 3 runs, single thread)\n", N);
+    std::printf("  profsubd evaluator:      build %8.1f ms   evaluate %8.1f ms  (%6.1f ns/point)\n", 1e3 * t_build_ps,
+                1e3 * t_eval_ps, 1e9 * t_eval_ps / N);
+    std::printf("  Bfr::Surface, cache:     build %8.1f ms   evaluate %8.1f ms  (%6.1f ns/point, random order)\n",
+                1e3 * t_build_bfr, 1e3 * t_eval_bfr, 1e9 * t_eval_bfr / N);
+    std::printf("                                               evaluate %8.1f ms  (%6.1f ns/point, grouped by face)\n",
+                1e3 * t_eval_bfr_grouped, 1e9 * t_eval_bfr_grouped / N);
+    std::printf("  Far PatchTable+PatchMap: build %8.1f ms   evaluate %8.1f ms  (%6.1f ns/point)\n", 1e3 * t_build_far,
+                1e3 * t_eval_far, 1e9 * t_eval_far / N);
+    std::printf("  ratio profsubd/Bfr (random order):   evaluate %.3f   build+evaluate %.3f\n", t_eval_ps / t_eval_bfr,
+                (t_build_ps + t_eval_ps) / (t_build_bfr + t_eval_bfr));
+    std::printf("  ratio profsubd/Bfr (grouped by face): evaluate %.3f\n", t_eval_ps / t_eval_bfr_grouped);
+    std::printf("  ratio profsubd/Far PatchTable:       evaluate %.3f   build+evaluate %.3f\n", t_eval_ps / t_eval_far,
+                (t_build_ps + t_eval_ps) / (t_build_far + t_eval_far));
+    std::printf("  max |profsubd - Bfr| over all coordinates: %.3g\n", maxdiff);
+
+    // --- P2: uniform refinement to level 3.
+    const int level = 3;
+    auto run_ps = [&] {
+        profsubd_mesh *out = nullptr;
+        profsubd_refine_uniform(mesh.get(), opts, level, &out);
+        profsubd_mesh_free(out);
+    };
+    auto run_far = [&] {
+        auto r = profsubd_test::build_refiner(shape);
+        r->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
+        std::vector<Pt> pts(r->GetNumVerticesTotal());
+        for (int v = 0; v < shape.num_vertices(); ++v)
+            for (int k = 0; k < 3; ++k) pts[v].p[k] = shape.positions[3 * v + k];
+        Far::PrimvarRefinerReal<double> pr(*r);
+        Pt *src = pts.data();
+        for (int lev = 1; lev <= level; ++lev) {
+            Pt *dst = src + r->GetLevel(lev - 1).GetNumVertices();
+            pr.Interpolate(lev, src, dst);
+            src = dst;
+        }
+        checksum += pts.back().p[0];
+    };
+    double t_ref_ps = best(3, run_ps);
+    double t_ref_far = best(3, run_far);
+    double m_ps = peak_mib(run_ps);
+    double m_far = peak_mib(run_far);
+    std::printf("\nP2: uniform refinement to level %d, topology + positions (best of 3)\n", level);
+    std::printf("  profsubd_refine_uniform:               %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_ps, m_ps);
+    std::printf("  Far TopologyRefiner + PrimvarRefiner:  %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_far, m_far);
+    std::printf("  ratio profsubd/Far: time %.3f   peak memory %.3f\n", t_ref_ps / t_ref_far, m_ps / m_far);
+    std::printf("(checksum %g)\n", checksum);
+
+    profsubd_evaluator_free(ev);
+    profsubd_options_free(opts);
+    return 0;
+}

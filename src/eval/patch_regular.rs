@@ -380,6 +380,11 @@ fn soft_boundary_by_scan(nb: &Neighbourhood, v: u32) -> bool {
             }
         }
     }
+    // A face that repeats `v` consecutively has a degenerate edge (v, v): an edge of its own
+    // with that one face, so a boundary edge that no tag can sharpen (as in Vtr).
+    if ends.contains(&v) {
+        return true;
+    }
     ends.sort_unstable();
     let mut i = 0;
     while i < ends.len() {

@@ -2,9 +2,13 @@
 //! tags, positions within 1e-9 × diagonal) and targets file (the C++ harness reads both), has the promised topology, and the CLI writes
 //! the same mesh plus one target line per vertex; bad input writes nothing.
 
+#[path = "support/mesh_compare.rs"]
+mod mesh_compare;
+
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::PathBuf;
+
+use mesh_compare::{assert_same, assert_targets, example_file, run_cli as profsubd};
 
 use profsubd::cli::profile::read_input;
 use profsubd::construct::profile::{build, EndKind};
@@ -14,29 +18,7 @@ use profsubd::Mesh;
 const EXAMPLES: [&str; 4] = ["bottle", "vase", "mouse", "spinning_top"];
 
 fn example(name: &str, ext: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("examples/profiles")
-        .join(format!("{name}.{ext}"))
-}
-
-fn profsubd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
-}
-
-/// Same faces and tags, positions equal within `1e-9 ×` the diagonal.
-fn assert_same(a: &Mesh, b: &Mesh, what: &str) {
-    assert_eq!(a.face_sizes(), b.face_sizes(), "{what}");
-    assert_eq!(a.face_indices(), b.face_indices(), "{what}");
-    assert_eq!(a.creases(), b.creases(), "{what}");
-    assert_eq!(a.corners(), b.corners(), "{what}");
-    assert_eq!(a.options(), b.options(), "{what}");
-    let tol = 1e-9 * a.bounding_box_diagonal();
-    for (i, (p, q)) in a.positions().iter().zip(b.positions()).enumerate() {
-        assert!((*p - *q).length() <= tol, "{what}: vertex {i} {p} vs {q}");
-    }
+    example_file("profiles", name, ext)
 }
 
 /// Edge face counts and vertex valences.
@@ -64,19 +46,8 @@ fn examples_regenerate_to_their_checked_in_obj_files() {
         let model = build(&input).unwrap();
         let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
         assert_same(&model.mesh, &stored, name);
-        let text = std::fs::read_to_string(example(name, "targets.txt")).unwrap();
-        let stored: Vec<Vec<f64>> = text
-            .lines()
-            .map(|l| l.split(' ').map(|s| s.parse().unwrap()).collect())
-            .collect();
-        assert_eq!(stored.len(), model.targets.len(), "{name}");
         let tol = 1e-12 * model.mesh.bounding_box_diagonal();
-        for (s, t) in stored.iter().zip(&model.targets) {
-            assert!(
-                (glam::DVec3::from_slice(s) - *t).length() <= tol,
-                "{name}: {t}"
-            );
-        }
+        assert_targets(&example(name, "targets.txt"), &model.targets, tol, name);
         assert!(model.fit.residual <= 1e-10 * model.mesh.bounding_box_diagonal());
         assert!(model.mesh.face_sizes().iter().all(|&n| n == 4));
         let (edges, val) = topology(&model.mesh);

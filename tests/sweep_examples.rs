@@ -6,10 +6,9 @@
 #[path = "support/mesh_compare.rs"]
 mod mesh_compare;
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::PathBuf;
 
-use mesh_compare::assert_same;
+use mesh_compare::{assert_same, assert_targets, example_file, run_cli as profsubd};
 use profsubd::construct::sweep::revolve::RevolveInput;
 use profsubd::construct::sweep::sweep::SweepInput;
 use profsubd::construct::sweep::{revolve, sweep, SweptSurface};
@@ -17,16 +16,7 @@ use profsubd::io::obj::read_obj_file;
 use profsubd::mesh::validate::check;
 
 fn example(name: &str, ext: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("examples/sweeps")
-        .join(format!("{name}.{ext}"))
-}
-
-fn profsubd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
+    example_file("sweeps", name, ext)
 }
 
 fn build(name: &str) -> SweptSurface {
@@ -59,19 +49,8 @@ fn examples_regenerate_with_their_topology() {
         let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
         assert_same(&s.mesh, &stored, name);
         // The checked-in data points (what the C++ harness compares OpenSubdiv's limit with).
-        let text = std::fs::read_to_string(example(name, "targets.txt")).unwrap();
-        let stored: Vec<f64> = text
-            .split_whitespace()
-            .map(|x| x.parse().unwrap())
-            .collect();
-        assert_eq!(stored.len(), 3 * s.targets.len(), "{name}");
         let tol = 1e-9 * s.mesh.bounding_box_diagonal();
-        for (t, q) in s.targets.iter().zip(stored.chunks(3)) {
-            assert!(
-                t.distance(glam::DVec3::new(q[0], q[1], q[2])) <= tol,
-                "{name}: target {t}"
-            );
-        }
+        assert_targets(&example(name, "targets.txt"), &s.targets, tol, name);
         assert!(s.fit.residual <= 1e-10 * s.mesh.bounding_box_diagonal());
         assert!(s.mesh.face_sizes().iter().all(|&n| n == 4));
         let r = check(&s.mesh);

@@ -1,12 +1,16 @@
 //! Corner detection on a point list, and one-sided tangent estimates.
 //!
+//! Two detectors: the planar profile curves compare parabola tangent estimates
+//! ([`detect_corners`]); the sweep's space curves, open or closed, compare chords
+//! ([`detect_chord_corners`]).
+//!
 //! The tangent on each side of a point is estimated from the parabola (chord-length
 //! parameter) through the point and its two neighbours on that side, or from the chord when
 //! only one neighbour exists. A point is a corner when those two tangents differ by more than
 //! the sharp angle: for densely sampled smooth curves they agree to second order, while at a
 //! real kink they differ by the kink's angle.
 
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
 /// Unit tangent leaving point `i` towards increasing index (`forward`) or arriving from
 /// decreasing index (`!forward`), both oriented along increasing index.
@@ -80,6 +84,25 @@ pub fn turning_angle(points: &[DVec2], i: usize) -> f64 {
 pub fn detect_corners(points: &[DVec2], sharp_angle: f64) -> Vec<usize> {
     (1..points.len().saturating_sub(1))
         .filter(|&i| turning_angle(points, i) > sharp_angle)
+        .collect()
+}
+
+/// Turning angle (radians, `0..=π`) at point `i` between the incoming and the outgoing chord.
+pub fn chord_turning_angle(points: &[DVec3], closed: bool, i: usize) -> f64 {
+    let n = points.len();
+    if !closed && (i == 0 || i == n - 1) {
+        return 0.0;
+    }
+    let a = (points[i] - points[(i + n - 1) % n]).normalize();
+    let b = (points[(i + 1) % n] - points[i]).normalize();
+    a.cross(b).length().atan2(a.dot(b))
+}
+
+/// Points whose chord turning angle exceeds `sharp_angle` (radians): interior points of an
+/// open curve, any point of a closed one.
+pub fn detect_chord_corners(points: &[DVec3], closed: bool, sharp_angle: f64) -> Vec<usize> {
+    (0..points.len())
+        .filter(|&i| chord_turning_angle(points, closed, i) > sharp_angle)
         .collect()
 }
 

@@ -52,6 +52,7 @@
 
 pub mod error;
 pub mod evaluator;
+pub mod fitted;
 pub mod handle;
 pub mod limit;
 pub mod mesh;

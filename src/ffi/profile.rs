@@ -6,11 +6,12 @@ use std::mem::size_of;
 use crate::construct::profile::{build, Caps, ProfileInput, ProfileModel};
 use crate::curves::Interpolation;
 use crate::ffi::error::{FfiError, FfiResult};
+use crate::ffi::fitted;
 use crate::ffi::handle::{self, Handle};
-use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh};
+use crate::ffi::mesh::profsubd_mesh;
 use crate::ffi::options::profsubd_options;
 use crate::ffi::panic::{guard, status_call};
-use crate::ffi::ptr::{arg_out, arg_out_opt, arg_ref, arg_slice, fill, CopyOut};
+use crate::ffi::ptr::{arg_out, arg_ref, arg_slice};
 use crate::ffi::status::profsubd_status;
 
 /// Values for `profsubd_options_set_interpolation` (passed as `int32_t`).
@@ -194,12 +195,7 @@ pub unsafe extern "C" fn profsubd_profile_get_mesh(
     profile: *const profsubd_profile,
     out: *mut *mut profsubd_mesh,
 ) -> profsubd_status {
-    status_call(|| {
-        let out = arg_out(out, "out")?;
-        let p = handle::borrow(profile, "profile")?;
-        out.write(new_mesh_handle(p.mesh.clone()));
-        Ok(())
-    })
+    fitted::get_mesh(profile, "profile", out)
 }
 
 /// Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
@@ -212,14 +208,7 @@ pub unsafe extern "C" fn profsubd_profile_get_targets(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let p = handle::borrow(profile, "profile")?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        c.finish(3 * p.targets.len(), "doubles", || {
-            fill(buf, p.targets.iter().flat_map(|t| t.to_array()))
-        })
-    })
+    fitted::get_targets(profile, "profile", out, capacity, needed)
 }
 
 /// The fit's achieved residual (largest distance between a vertex's limit position and its
@@ -231,20 +220,7 @@ pub unsafe extern "C" fn profsubd_profile_get_fit_residual(
     residual: *mut f64,
     tolerance: *mut f64,
 ) -> profsubd_status {
-    status_call(|| {
-        let p = handle::borrow(profile, "profile")?;
-        let (r, t) = (
-            arg_out_opt(residual, "residual")?,
-            arg_out_opt(tolerance, "tolerance")?,
-        );
-        if let Some(r) = r {
-            r.write(p.fit.residual);
-        }
-        if let Some(t) = t {
-            t.write(p.fit.tolerance);
-        }
-        Ok(())
-    })
+    fitted::get_fit_residual(profile, "profile", residual, tolerance)
 }
 
 unsafe fn set(

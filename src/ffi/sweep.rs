@@ -10,11 +10,12 @@ use crate::construct::sweep::revolve::RevolveInput;
 use crate::construct::sweep::sweep::SweepInput;
 use crate::construct::sweep::{revolve, sweep, SweptSurface};
 use crate::ffi::error::{FfiError, FfiResult};
+use crate::ffi::fitted;
 use crate::ffi::handle::{self, Handle};
-use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh};
+use crate::ffi::mesh::profsubd_mesh;
 use crate::ffi::options::{profsubd_options, OptionsData};
 use crate::ffi::panic::{guard, status_call};
-use crate::ffi::ptr::{arg_out, arg_out_opt, arg_slice, fill, CopyOut};
+use crate::ffi::ptr::{arg_out, arg_slice};
 use crate::ffi::status::profsubd_status;
 
 /// Values for `profsubd_options_set_sweep_frame` (passed as `int32_t`).
@@ -174,13 +175,7 @@ pub unsafe extern "C" fn profsubd_swept_get_mesh(
     swept: *const profsubd_swept,
     out: *mut *mut profsubd_mesh,
 ) -> profsubd_status {
-    status_call(|| {
-        let out = arg_out(out, "out")?;
-        out.write(new_mesh_handle(
-            handle::borrow(swept, "swept")?.mesh.clone(),
-        ));
-        Ok(())
-    })
+    fitted::get_mesh(swept, "swept", out)
 }
 
 /// Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
@@ -193,14 +188,7 @@ pub unsafe extern "C" fn profsubd_swept_get_targets(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let s = handle::borrow(swept, "swept")?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        c.finish(3 * s.targets.len(), "doubles", || {
-            fill(buf, s.targets.iter().flat_map(|t| t.to_array()))
-        })
-    })
+    fitted::get_targets(swept, "swept", out, capacity, needed)
 }
 
 /// The fit's achieved residual (largest distance between a vertex's limit position and its
@@ -212,20 +200,7 @@ pub unsafe extern "C" fn profsubd_swept_get_fit_residual(
     residual: *mut f64,
     tolerance: *mut f64,
 ) -> profsubd_status {
-    status_call(|| {
-        let s = handle::borrow(swept, "swept")?;
-        let (r, t) = (
-            arg_out_opt(residual, "residual")?,
-            arg_out_opt(tolerance, "tolerance")?,
-        );
-        if let Some(r) = r {
-            r.write(s.fit.residual);
-        }
-        if let Some(t) = t {
-            t.write(s.fit.tolerance);
-        }
-        Ok(())
-    })
+    fitted::get_fit_residual(swept, "swept", residual, tolerance)
 }
 
 unsafe fn set(

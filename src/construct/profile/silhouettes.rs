@@ -8,7 +8,7 @@
 //! each spline is clamped perpendicular to the axis, so the surface has a tangent plane
 //! there.
 
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
 use super::input::{Caps, ProfileInput};
 use crate::curves::corners::{detect_corners, one_sided_tangent_within};
@@ -224,7 +224,7 @@ impl Silhouettes {
             let out = if i < 2 { 1.0 } else { -1.0 };
             let cond = |e: usize| match ends[e] {
                 EndKind::Smooth => {
-                    EndCondition::Tangent(DVec2::new(if e == 0 { out } else { -out }, 0.0))
+                    EndCondition::Tangent(DVec3::new(if e == 0 { out } else { -out }, 0.0, 0.0))
                 }
                 _ => EndCondition::Natural,
             };

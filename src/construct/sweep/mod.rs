@@ -1,6 +1,5 @@
 //! Revolution and general sweeps: a planar profile moved along a trajectory (issue 5).
 //!
-//! - [`curve`]: open or closed space curves through points (splines broken at corners, polylines);
 //! - [`frames`]: fixed, Frenet and rotation-minimizing frames along a sampled trajectory;
 //! - [`profile`]: the swept profile, its samples, scaling and morphing;
 //! - [`trajectory`]: the validated trajectory, its samples and their frames;
@@ -10,7 +9,6 @@
 //! - [`build`]: the fitted constructions [`revolve`](build::revolve) and [`sweep`](build::sweep).
 
 pub mod build;
-pub mod curve;
 pub mod frames;
 pub mod mesh;
 pub mod profile;

@@ -3,7 +3,8 @@
 
 use glam::{DVec2, DVec3};
 
-use super::curve::{detect_corners, Interpolation, SpaceCurve};
+use crate::curves::corners::detect_chord_corners;
+use crate::curves::{Interpolation, SpaceCurve};
 use crate::error::{Error, Result};
 
 /// A validated profile (and its optional end profile).
@@ -62,7 +63,7 @@ impl SweptProfile {
         // Validate before looking at angles and crossings.
         SpaceCurve::new("profile", &start, closed, Interpolation::Polyline, &[])?;
         check_no_crossing("profile", points, closed)?;
-        let mut corners = detect_corners(&start, closed, sharp_angle);
+        let mut corners = detect_chord_corners(&start, closed, sharp_angle);
         corners.extend_from_slice(forced);
         let end = match end {
             None => None,
@@ -77,7 +78,7 @@ impl SweptProfile {
                 let e3 = lift(e);
                 SpaceCurve::new("profile_end", &e3, closed, Interpolation::Polyline, &[])?;
                 check_no_crossing("profile_end", e, closed)?;
-                corners.extend(detect_corners(&e3, closed, sharp_angle));
+                corners.extend(detect_chord_corners(&e3, closed, sharp_angle));
                 Some(e3)
             }
         };

@@ -26,12 +26,13 @@ use std::path::Path;
 use glam::{DVec2, DVec3};
 use serde::Deserialize;
 
-use super::curve::{detect_corners, Interpolation, SpaceCurve};
 use super::mesh::grid_mesh;
 use super::profile::check_no_crossing;
 use super::sweep::{sample_counts_ok, GridEnd, SweepGrid};
 use crate::construct::pole_cap::CapVertex;
 use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
+use crate::curves::corners::detect_chord_corners;
+use crate::curves::{Interpolation, SpaceCurve};
 use crate::error::{Error, Result};
 use crate::mesh::MeshParts;
 
@@ -136,7 +137,7 @@ impl RevolvedProfile {
                 all.extend(lifted[..n - 1].iter().rev().map(mirror));
             }
         }
-        let mut corners = detect_corners(&all, closed, sharp_angle);
+        let mut corners = detect_chord_corners(&all, closed, sharp_angle);
         for &c in forced {
             if c >= n || ((c == 0 || c == n - 1) && !on_axis[usize::from(c != 0)]) {
                 return Err(Error::invalid_argument(format!(

@@ -29,12 +29,12 @@ use std::path::Path;
 use glam::DVec3;
 use serde::Deserialize;
 
-use super::curve::Interpolation;
 use super::frames::FrameKind;
 use super::mesh::grid_mesh;
 use super::profile::SweptProfile;
 use super::trajectory::{Trajectory, TrajectorySample};
 use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
+use crate::curves::Interpolation;
 use crate::error::{Error, Result};
 use crate::mesh::MeshParts;
 

@@ -6,8 +6,9 @@
 
 use glam::DVec3;
 
-use super::curve::{detect_corners, CurveSample, Interpolation, SpaceCurve};
 use super::frames::{compute_frames, Frame, FrameKind, FramePoint};
+use crate::curves::corners::detect_chord_corners;
+use crate::curves::{CurveSample, Interpolation, SpaceCurve};
 use crate::error::{Error, Result};
 
 /// Frame steps per surface sample interval.
@@ -50,7 +51,7 @@ impl Trajectory {
             // Validate before detecting corners, which needs distinct finite points.
             SpaceCurve::new("trajectory", points, closed, Interpolation::Polyline, &[])?;
         }
-        let mut all = detect_corners(points, closed, sharp_angle);
+        let mut all = detect_chord_corners(points, closed, sharp_angle);
         all.extend_from_slice(corners);
         let curve = SpaceCurve::new("trajectory", points, closed, interpolation, &all)?;
         for &c in curve.corners() {

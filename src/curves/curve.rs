@@ -1,17 +1,47 @@
-//! Space curves through points, open or closed: C² cubic splines (chord-length parameter)
+//! Curves through points, 3-D, open or closed: C² cubic splines (chord-length parameter)
 //! broken at corners, or polylines.
 //!
-//! The sweep's trajectory is a 3-D curve and its profile may be closed; the planar, open
-//! profile curves of [`crate::curves`] cover neither, so this module adds the two cases with
-//! the same conventions (chord-length knots, natural ends at breaks, Hermite spans). A closed
-//! curve without corners is a *periodic* spline (cyclic tridiagonal system); a closed curve
-//! with corners is a chain of runs from corner to corner. Planar profiles use `z = 0`. The
-//! choice of spline or polyline is the profile pipeline's [`Interpolation`].
+//! The parameter of point `i` is the summed chord length from point 0 (`knots()[i]`). Every
+//! span is a cubic Hermite segment in that parameter, so evaluation is uniform for splines
+//! and polylines. Between corners an open curve is a C² spline run with natural ends (or a
+//! prescribed end tangent, see [`EndCondition`]); a closed curve without corners is a
+//! *periodic* spline (cyclic tridiagonal system); a closed curve with corners is a chain of
+//! runs from corner to corner. Planar curves use `z = 0` (see [`super::PlanarCurve`]).
 
 use glam::DVec3;
 
-pub use crate::curves::Interpolation;
+use super::corners::chord_turning_angle;
 use crate::error::{Error, Result};
+
+/// How the points are joined (JSON: `"spline"`, `"polyline"`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Interpolation {
+    /// C² cubic spline with chord-length parameter, broken (C⁰) at corners. The default.
+    #[default]
+    Spline,
+    /// Straight segments: the points taken literally.
+    Polyline,
+}
+
+/// End condition of a spline run at an open curve's first or last point.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum EndCondition {
+    /// Zero second derivative (natural spline).
+    #[default]
+    Natural,
+    /// Prescribed first derivative with respect to the chord-length parameter.
+    Tangent(DVec3),
+}
+
+/// `what: message`, or the bare message when the caller names nothing.
+fn named(what: &str, message: String) -> Error {
+    if what.is_empty() {
+        Error::invalid_argument(message)
+    } else {
+        Error::invalid_argument(format!("{what}: {message}"))
+    }
+}
 
 /// A curve through points, parameterized by summed chord length.
 #[derive(Debug, Clone, PartialEq)]
@@ -52,19 +82,42 @@ impl SpaceCurve {
         interpolation: Interpolation,
         corners: &[usize],
     ) -> Result<SpaceCurve> {
+        Self::with_ends(
+            what,
+            points,
+            closed,
+            interpolation,
+            corners,
+            Default::default(),
+        )
+    }
+
+    /// [`SpaceCurve::new`] with the end conditions of an open spline at its first and last
+    /// point (ignored by closed curves and polylines).
+    pub fn with_ends(
+        what: &str,
+        points: &[DVec3],
+        closed: bool,
+        interpolation: Interpolation,
+        corners: &[usize],
+        ends: [EndCondition; 2],
+    ) -> Result<SpaceCurve> {
         let n = points.len();
         let need = if closed { 3 } else { 2 };
         if n < need {
-            return Err(Error::invalid_argument(format!(
-                "{what}: a{} curve needs at least {need} points, got {n}",
-                if closed { " closed" } else { "n open" }
-            )));
+            return Err(named(
+                what,
+                format!(
+                    "a{} curve needs at least {need} points, got {n}",
+                    if closed { " closed" } else { "n open" }
+                ),
+            ));
         }
         if let Some((i, p)) = points.iter().enumerate().find(|(_, p)| !p.is_finite()) {
-            return Err(Error::invalid_argument(format!(
-                "{what}: point {i} ({}, {}, {}) is not finite",
-                p.x, p.y, p.z
-            )));
+            return Err(named(
+                what,
+                format!("point {i} ({}, {}, {}) is not finite", p.x, p.y, p.z),
+            ));
         }
         let scale = points
             .iter()
@@ -76,10 +129,13 @@ impl SpaceCurve {
             let j = (i + 1) % n;
             let h = points[i].distance(points[j]);
             if h <= 1e-12 * (1.0 + scale) {
-                return Err(Error::invalid_argument(format!(
-                    "{what}: points {i} and {j} coincide ({}, {}, {})",
-                    points[j].x, points[j].y, points[j].z
-                )));
+                return Err(named(
+                    what,
+                    format!(
+                        "points {i} and {j} coincide ({}, {}, {})",
+                        points[j].x, points[j].y, points[j].z
+                    ),
+                ));
             }
             knots.push(knots[i] + h);
         }
@@ -90,16 +146,20 @@ impl SpaceCurve {
             .iter()
             .find(|&&c| c >= n || (!closed && (c == 0 || c == n - 1)))
         {
-            return Err(Error::invalid_argument(format!(
-                "{what}: corner {c} is not {} point index (0 ≤ index < {n})",
-                if closed { "a" } else { "an interior" }
-            )));
+            return Err(named(
+                what,
+                format!(
+                    "corner {c} is not {} point index (0 ≤ index < {n})",
+                    if closed { "a" } else { "an interior" }
+                ),
+            ));
         }
         if interpolation == Interpolation::Polyline {
             // Every point where the direction changes is a corner.
             corners = (0..n)
                 .filter(|&i| {
-                    (closed || (i > 0 && i < n - 1)) && turning_angle(points, closed, i) > 1e-12
+                    (closed || (i > 0 && i < n - 1))
+                        && chord_turning_angle(points, closed, i) > 1e-12
                 })
                 .collect();
         }
@@ -110,7 +170,7 @@ impl SpaceCurve {
                     [d, d]
                 })
                 .collect(),
-            Interpolation::Spline => spline_tangents(points, &knots, closed, &corners),
+            Interpolation::Spline => spline_tangents(points, &knots, closed, &corners, ends),
         };
         Ok(SpaceCurve {
             points: points.to_vec(),
@@ -144,6 +204,11 @@ impl SpaceCurve {
     /// Point indices where the curve is only C⁰, increasing.
     pub fn corners(&self) -> &[usize] {
         &self.corners
+    }
+
+    /// Derivatives at the two ends of span `i` (`[start, end]`).
+    pub fn span_tangents(&self, i: usize) -> [DVec3; 2] {
+        self.tangents[i]
     }
 
     fn span(&self, s: f64) -> usize {
@@ -288,31 +353,13 @@ impl SpaceCurve {
     }
 }
 
-/// Turning angle (radians, `0..=π`) at point `i` between the incoming and the outgoing chord.
-pub fn turning_angle(points: &[DVec3], closed: bool, i: usize) -> f64 {
-    let n = points.len();
-    if !closed && (i == 0 || i == n - 1) {
-        return 0.0;
-    }
-    let a = (points[i] - points[(i + n - 1) % n]).normalize();
-    let b = (points[(i + 1) % n] - points[i]).normalize();
-    a.cross(b).length().atan2(a.dot(b))
-}
-
-/// Points whose chord turning angle exceeds `sharp_angle` (radians): interior points of an
-/// open curve, any point of a closed one.
-pub fn detect_corners(points: &[DVec3], closed: bool, sharp_angle: f64) -> Vec<usize> {
-    (0..points.len())
-        .filter(|&i| turning_angle(points, closed, i) > sharp_angle)
-        .collect()
-}
-
 /// Derivatives at both ends of every span.
 fn spline_tangents(
     points: &[DVec3],
     knots: &[f64],
     closed: bool,
     corners: &[usize],
+    ends: [EndCondition; 2],
 ) -> Vec<[DVec3; 2]> {
     let n = points.len();
     let spans = knots.len() - 1;
@@ -345,7 +392,18 @@ fn spline_tangents(
             .windows(2)
             .map(|w| knots[w[0] + 1] - knots[w[0]])
             .collect();
-        let m = natural_derivatives(&pts, &h);
+        // Only an open curve's own first and last points take the prescribed ends.
+        let start = if !closed && run[0] == 0 {
+            ends[0]
+        } else {
+            EndCondition::Natural
+        };
+        let end = if !closed && run[run.len() - 1] == n - 1 {
+            ends[1]
+        } else {
+            EndCondition::Natural
+        };
+        let m = run_derivatives(&pts, &h, [start, end]);
         for (j, w) in run.windows(2).enumerate() {
             tangents[w[0]] = [m[j], m[j + 1]];
         }
@@ -360,15 +418,22 @@ fn c2_row(p_prev: DVec3, p: DVec3, p_next: DVec3, h0: f64, h1: f64) -> ([f64; 3]
     ([h1, 2.0 * (h0 + h1), h0], (d0 * h1 + d1 * h0) * 3.0)
 }
 
-/// First derivatives at the points of a natural C² spline run with span lengths `h`.
-fn natural_derivatives(p: &[DVec3], h: &[f64]) -> Vec<DVec3> {
+/// First derivatives at the points of a C² spline run with span lengths `h` and the given
+/// end conditions.
+fn run_derivatives(p: &[DVec3], h: &[f64], ends: [EndCondition; 2]) -> Vec<DVec3> {
     let n = p.len();
     let mut rows = Vec::with_capacity(n);
-    rows.push(([0.0, 2.0, 1.0], (p[1] - p[0]) / h[0] * 3.0));
+    rows.push(match ends[0] {
+        EndCondition::Natural => ([0.0, 2.0, 1.0], (p[1] - p[0]) / h[0] * 3.0),
+        EndCondition::Tangent(t) => ([0.0, 1.0, 0.0], t),
+    });
     for i in 1..n - 1 {
         rows.push(c2_row(p[i - 1], p[i], p[i + 1], h[i - 1], h[i]));
     }
-    rows.push(([1.0, 2.0, 0.0], (p[n - 1] - p[n - 2]) / h[n - 2] * 3.0));
+    rows.push(match ends[1] {
+        EndCondition::Natural => ([1.0, 2.0, 0.0], (p[n - 1] - p[n - 2]) / h[n - 2] * 3.0),
+        EndCondition::Tangent(t) => ([0.0, 1.0, 0.0], t),
+    });
     solve_tridiagonal(&rows)
 }
 
@@ -435,6 +500,7 @@ fn solve_tridiagonal(rows: &[([f64; 3], DVec3)]) -> Vec<DVec3> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::curves::corners::detect_chord_corners;
     use std::f64::consts::TAU;
 
     fn circle(n: usize, r: f64) -> Vec<DVec3> {
@@ -489,7 +555,7 @@ mod tests {
             DVec3::new(1.0, 1.0, 0.0),
             DVec3::new(0.0, 1.0, 0.0),
         ];
-        let corners = detect_corners(&sq, true, 30f64.to_radians());
+        let corners = detect_chord_corners(&sq, true, 30f64.to_radians());
         assert_eq!(corners, vec![0, 1, 2, 3]);
         let c = SpaceCurve::new("sq", &sq, true, Interpolation::Spline, &corners).unwrap();
         // Runs of one span with natural ends are straight lines.

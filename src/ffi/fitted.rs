@@ -1,0 +1,107 @@
+//! The accessors shared by the C result objects of fitted constructions
+//! (`profsubd_profile`, `profsubd_swept`): fitted mesh, data points, fit residual. Each C
+//! function is a one-line call into these.
+
+use glam::DVec3;
+
+use crate::construct::profile::ProfileModel;
+use crate::construct::sweep::SweptSurface;
+use crate::ffi::handle::{self, Handle};
+use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh};
+use crate::ffi::panic::status_call;
+use crate::ffi::ptr::{arg_out, arg_out_opt, fill, CopyOut};
+use crate::ffi::status::profsubd_status;
+use crate::fit::FitReport;
+use crate::mesh::Mesh;
+
+/// A fitted model: a control mesh whose vertices' limit positions are the data points.
+pub trait Fitted {
+    /// The fitted control mesh.
+    fn mesh(&self) -> &Mesh;
+    /// The data point of each control vertex, in vertex order.
+    fn targets(&self) -> &[DVec3];
+    /// The achieved residual and its tolerance.
+    fn fit(&self) -> &FitReport;
+}
+
+/// Both constructions' results hold the three as fields of the same names.
+macro_rules! fitted_fields {
+    ($($t:ty),*) => {$(
+        impl Fitted for $t {
+            fn mesh(&self) -> &Mesh {
+                &self.mesh
+            }
+            fn targets(&self) -> &[DVec3] {
+                &self.targets
+            }
+            fn fit(&self) -> &FitReport {
+                &self.fit
+            }
+        }
+    )*};
+}
+
+fitted_fields!(ProfileModel, SweptSurface);
+
+/// `*out` = a new mesh handle with a copy of the fitted mesh behind `model` (named `name`).
+pub unsafe fn get_mesh<H: Handle>(
+    model: *const H,
+    name: &str,
+    out: *mut *mut profsubd_mesh,
+) -> profsubd_status
+where
+    H::Inner: Fitted,
+{
+    status_call(|| {
+        let out = arg_out(out, "out")?;
+        out.write(new_mesh_handle(handle::borrow(model, name)?.mesh().clone()));
+        Ok(())
+    })
+}
+
+/// Copy out the data points, 3 doubles each (copy-out protocol in doubles).
+pub unsafe fn get_targets<H: Handle>(
+    model: *const H,
+    name: &str,
+    out: *mut f64,
+    capacity: usize,
+    needed: *mut usize,
+) -> profsubd_status
+where
+    H::Inner: Fitted,
+{
+    status_call(|| {
+        let targets = handle::borrow(model, name)?.targets();
+        let c = CopyOut::new(capacity, needed)?;
+        let buf = c.buffer(out, 1, "out")?;
+        c.finish(3 * targets.len(), "doubles", || {
+            fill(buf, targets.iter().flat_map(|t| t.to_array()))
+        })
+    })
+}
+
+/// Write the fit's residual and tolerance to the outputs that are not NULL.
+pub unsafe fn get_fit_residual<H: Handle>(
+    model: *const H,
+    name: &str,
+    residual: *mut f64,
+    tolerance: *mut f64,
+) -> profsubd_status
+where
+    H::Inner: Fitted,
+{
+    status_call(|| {
+        let fit = handle::borrow(model, name)?.fit();
+        let (r, t) = (
+            arg_out_opt(residual, "residual")?,
+            arg_out_opt(tolerance, "tolerance")?,
+        );
+        if let Some(r) = r {
+            r.write(fit.residual);
+        }
+        if let Some(t) = t {
+            t.write(fit.tolerance);
+        }
+        Ok(())
+    })
+}

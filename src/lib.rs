@@ -17,6 +17,8 @@
 //! - [`ffi`]: the C ABI (`include/profsubd.h`);
 //! - [`cli`]: the `profsubd` command-line tool.
 
+#![deny(missing_docs)]
+
 pub mod catmark;
 pub mod cli;
 pub mod construct;

@@ -1,7 +1,9 @@
 // Conformance of profsubd's (face, u, v) evaluator with OpenSubdiv 3.5, through the C API.
 //
 // For every shape of the OpenSubdiv regression folder, under every boundary rule and crease
-// method (randomized meshes are not covered yet):
+// method, and over 16 randomized meshes (random_mesh.h: valences 2-8, darts, semi-sharp and
+// fractional sharpness, boundaries, holes; 2,000 points each, one boundary rule / crease
+// method per mesh, cycling through all six):
 //  - random points (face, u, v) against Bfr::Surface<double> at approximation level 10:
 //    positions within 1e-12 x bounding-box diagonal, du and dv within 1e-9 relative
 //    (relative to max(|Bfr derivative|, 1e-3 x diagonal): tiny derivatives are compared
@@ -14,7 +16,11 @@
 //      refinement; Far's PatchTable (adaptive, isolation 10) + PatchMap is the reference then,
 //      with the same near-corner exclusion;
 //    * faces at a valence-2 dart are never given to Bfr (OpenSubdiv 3.5 writes out of
-//      bounds there); faces with an interior valence-2 corner use an uncached factory.
+//      bounds there); faces with an interior valence-2 corner use an uncached factory. On
+//      the randomized meshes, as in conformance_limit_vertices, faces within two face-rings
+//      of an interior valence-2 vertex with sharpness nearby are never given to Bfr and
+//      faces touching one are not compared with it (bfr35_faces()); all their corners get
+//      the exact reference.
 //    Those points are checked against the exact reference instead: the smooth limit mask at
 //    the refined vertex of Far's uniform refinement (level 3) that sits at dyadic (u, v)
 //    near each irregular corner, where the refined vertex is regular and unsharpened (then
@@ -31,6 +37,7 @@
 
 #include "capi_mesh.h"
 #include "osd_shape.h"
+#include "random_mesh.h"
 #include "test_support.h"
 
 #include <profsubd.h>
@@ -93,6 +100,9 @@ struct Figures {
     std::string bfr_near_where;
     double bfr_ref_dev = 0;  // max |Bfr - reference| / diag at reference points
     long bfr_declined = 0, bfr_declined_ours_ok = 0;
+    long bfr35_avoided = 0;  // points on faces OpenSubdiv 3.5's Bfr must not see
+    double worst_pos_random = 0, worst_deriv_random = 0, worst_ref_random = 0;
+    long random_bfr_points = 0, random_ref_points = 0;
     std::string patch_where;
     double val2_nonman_deriv = 0;
 };
@@ -229,8 +239,10 @@ class ShapeRun {
 public:
     ShapeRun(Checker &c, Figures &fig) : c_(c), fig_(fig) {}
 
+    // `bfr35_rules`: also keep from Bfr the faces bfr35_faces() marks (randomized meshes),
+    // checking them against the exact refinement reference at every corner instead.
     void run(const std::string &label, const OsdShape &shape, const Sdc::Options &opts, int npoints,
-             unsigned seed);
+             unsigned seed, bool bfr35_rules = false);
 
 private:
     Checker &c_;
@@ -238,7 +250,7 @@ private:
 };
 
 void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::Options &opts, int npoints,
-                   unsigned seed) {
+                   unsigned seed, bool bfr35_rules) {
     std::unique_ptr<Far::TopologyRefiner> refiner = profsubd_test::build_refiner(shape, opts);
     if (!c_.check(refiner != nullptr, label + ": Far rejects the mesh")) return;
     const Far::TopologyLevel &base = refiner->GetLevel(0);
@@ -262,6 +274,17 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
     std::vector<bool> regular = regular_vertices(base), interior2, dart2;
     valence2(base, &interior2, &dart2);
     bool chaikin_semi = opts.GetCreasingMethod() == Sdc::Options::CREASE_CHAIKIN && has_semi_sharp(shape);
+    profsubd_test::Bfr35Faces bfr35;
+    if (bfr35_rules) {
+        bfr35 = profsubd_test::bfr35_faces(base);
+    } else {
+        bfr35.avoid.assign(base.GetNumFaces(), false);
+        bfr35.near_val2.assign(base.GetNumFaces(), false);
+    }
+    const long bfr_points_before = fig_.bfr_points, ref_points_before = fig_.ref_points;
+    const double worst_pos_before = fig_.worst_pos_bfr, worst_deriv_before = fig_.worst_deriv_bfr,
+                 worst_ref_before = fig_.worst_ref;
+    if (bfr35_rules) fig_.worst_pos_bfr = fig_.worst_deriv_bfr = fig_.worst_ref = 0;
 
     // Reference evaluators.
     using Factory = Bfr::RefinerSurfaceFactory<>;
@@ -375,10 +398,13 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
         }
         double p[3], du[3], dv[3];
         st = profsubd_evaluator_evaluate(ev.get(), &faces[i], &us[i], &vs[i], 1, p, du, dv);
-        if (at_dart2) continue;  // never given to Bfr (OpenSubdiv 3.5 writes out of bounds)
+        if (at_dart2 || bfr35.avoid[f]) {
+            fig_.bfr35_avoided += bfr35.avoid[f];
+            continue;  // never given to Bfr (OpenSubdiv 3.5 writes out of bounds)
+        }
         if (f != current) {
             current = f;
-            valid = (at_int2 ? uncached : cached).InitVertexSurface(f, &surface);
+            valid = (at_int2 || bfr35.near_val2[f] ? uncached : cached).InitVertexSurface(f, &surface);
             if (valid) {
                 bfr_points.resize(3 * surface.GetNumPatchPoints());
                 surface.PreparePatchPoints(shape.positions.data(), 3, bfr_points.data(), 3);
@@ -406,7 +432,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
         surface.Evaluate(uv, bfr_points.data(), 3, bp, bu, bv);
         Sample bfr{{bp[0], bp[1], bp[2]}, scale * V3{bu[0], bu[1], bu[2]}, scale * V3{bv[0], bv[1], bv[2]}};
 
-        bool near = near_irregular(pf, us[i], vs[i]);
+        bool near = near_irregular(pf, us[i], vs[i]) || bfr35.near_val2[f];
         if (near || chaikin_semi) {
             double dev = norm(bfr.p - ours.p) / diag;
             if (dev > fig_.bfr_near_dev) {
@@ -478,7 +504,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
         for (int k = 0; k < 4; ++k) {
             // Near irregular corners always; everywhere when Chaikin creasing has semi-sharp
             // features to act on (there OpenSubdiv's Bfr is not a reference).
-            if (corner_regular(pf, k) && !chaikin_semi) continue;
+            if (corner_regular(pf, k) && !chaikin_semi && !bfr35.avoid[f] && !bfr35.near_val2[f]) continue;
             int ci = (k == 1 || k == 2) ? n : 0, cj = k >= 2 ? n : 0;
             for (int a = 1; a <= 2; ++a)
                 for (int b = 1; b <= 2; ++b) {
@@ -507,8 +533,8 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
                         skip_bfr = skip_bfr || dart2[base.GetFaceVertices(f)[q]];
                         int2 = int2 || interior2[base.GetFaceVertices(f)[q]];
                     }
-                    if (skip_bfr) continue;
-                    bool ok = (int2 ? uncached : cached).InitVertexSurface(f, &surface);
+                    if (skip_bfr || bfr35.avoid[f]) continue;
+                    bool ok = (int2 || bfr35.near_val2[f] ? uncached : cached).InitVertexSurface(f, &surface);
                     if (!ok) continue;
                     bfr_points.resize(3 * surface.GetNumPatchPoints());
                     surface.PreparePatchPoints(shape.positions.data(), 3, bfr_points.data(), 3);
@@ -521,6 +547,16 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
                     fig_.bfr_ref_dev = std::max(fig_.bfr_ref_dev, norm(V3{bp[0], bp[1], bp[2]} - want) / diag);
                 }
         }
+    }
+    if (bfr35_rules) {
+        fig_.random_bfr_points += fig_.bfr_points - bfr_points_before;
+        fig_.random_ref_points += fig_.ref_points - ref_points_before;
+        fig_.worst_pos_random = std::max(fig_.worst_pos_random, fig_.worst_pos_bfr);
+        fig_.worst_deriv_random = std::max(fig_.worst_deriv_random, fig_.worst_deriv_bfr);
+        fig_.worst_ref_random = std::max(fig_.worst_ref_random, fig_.worst_ref);
+        fig_.worst_pos_bfr = std::max(fig_.worst_pos_bfr, worst_pos_before);
+        fig_.worst_deriv_bfr = std::max(fig_.worst_deriv_bfr, worst_deriv_before);
+        fig_.worst_ref = std::max(fig_.worst_ref, worst_ref_before);
     }
 }
 
@@ -567,6 +603,18 @@ int main() {
         }
         c.check(shapes == (int)profsubd_test::kExpectedShapeCount, "all shapes read");
     }
+    // Randomized meshes (random_mesh.h), each under one boundary rule / crease method.
+    auto t_random = std::chrono::steady_clock::now();
+    for (unsigned seed = 1; seed <= 16; ++seed) {
+        std::string label = "random" + std::to_string(seed);
+        c.set_context(label);
+        OsdShape shape = profsubd_test::random_mesh(seed);
+        const Config &k = configs[seed % 6];
+        shape.options.SetVtxBoundaryInterpolation(k.boundary);
+        shape.options.SetCreasingMethod(k.crease);
+        runner.run(label, shape, shape.options, 2000, 1000u + seed, true);
+    }
+    double random_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_random).count();
     c.set_context("");
     char b[1024];
     std::snprintf(b, sizeof b,
@@ -580,6 +628,13 @@ int main() {
                   fig.bfr_declined, fig.bfr_declined_ours_ok);
     c.note(b);
     c.note("PatchTable's largest deviation under Chaikin at: " + fig.patch_where);
+    std::snprintf(b, sizeof b,
+                  "16 randomized meshes (%.1f s): %ld points vs Bfr (worst position %.2e x diagonal, worst "
+                  "derivative %.2e relative), %ld vs exact refinement (worst %.2e); %ld points on faces "
+                  "OpenSubdiv 3.5's Bfr must not see (checked against the exact refinement only)",
+                  random_seconds, fig.random_bfr_points, fig.worst_pos_random, fig.worst_deriv_random,
+                  fig.random_ref_points, fig.worst_ref_random, fig.bfr35_avoided);
+    c.note(b);
     std::snprintf(b, sizeof b, "catmark_val2_nonman: largest derivative difference with Bfr %.3e relative (not checked)",
                   fig.val2_nonman_deriv);
     c.note(b);

@@ -16,6 +16,7 @@
 
 #include "capi_mesh.h"
 #include "osd_shape.h"
+#include "random_points.h"
 #include "test_support.h"
 
 #include <profsubd.h>
@@ -36,7 +37,6 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
-#include <random>
 
 using namespace OpenSubdiv;
 using Clock = std::chrono::steady_clock;
@@ -169,16 +169,9 @@ int main(int argc, char **argv) {
 
     const int N = 1000000;
     const int nf = shape.num_faces();
-    std::mt19937_64 rng(7);
-    std::uniform_int_distribution<int> pick(0, nf - 1);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<uint32_t> faces(N);
-    std::vector<double> us(N), vs(N);
-    for (int i = 0; i < N; ++i) {
-        faces[i] = (uint32_t)pick(rng);
-        us[i] = unit(rng);
-        vs[i] = unit(rng);
-    }
+    profsubd_test::FacePoints points = profsubd_test::random_face_points(N, nf, 7);
+    const std::vector<uint32_t> &faces = points.faces;
+    const std::vector<double> &us = points.us, &vs = points.vs;
     std::vector<double> P(3 * N), DU(3 * N), DV(3 * N);
     double checksum = 0;
 

@@ -38,6 +38,7 @@
 #include "capi_mesh.h"
 #include "osd_shape.h"
 #include "random_mesh.h"
+#include "random_points.h"
 #include "test_support.h"
 
 #include <profsubd.h>
@@ -55,7 +56,6 @@
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <sstream>
 
 using namespace OpenSubdiv;
@@ -324,16 +324,9 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
     }
 
     // Random points, grouped by base face for the Bfr side.
-    std::mt19937_64 rng(seed);
-    std::uniform_int_distribution<int> pick(0, (int)nptex - 1);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<uint32_t> faces(npoints);
-    std::vector<double> us(npoints), vs(npoints);
-    for (int i = 0; i < npoints; ++i) {
-        faces[i] = (uint32_t)pick(rng);
-        us[i] = unit(rng);
-        vs[i] = unit(rng);
-    }
+    profsubd_test::FacePoints points = profsubd_test::random_face_points(npoints, (int)nptex, seed);
+    std::vector<uint32_t> &faces = points.faces;
+    std::vector<double> &us = points.us, &vs = points.vs;
     // A few exact corners and edges too.
     for (int i = 0; i < std::min(npoints, 40); ++i) {
         us[i] = (double)(i % 3) / 2.0;

@@ -12,15 +12,13 @@
 #include "capi_mesh.h"
 #include "osd_shape.h"
 #include "test_support.h"
+#include "vertex_targets.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-#include <opensubdiv/bfr/refinerSurfaceFactory.h>
-#include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyLevel.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 using namespace profsubd_test;
@@ -52,40 +50,6 @@ double diagonal(const std::vector<double> &p) {
 double dist3(const double *a, const double *b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                      (a[2] - b[2]) * (a[2] - b[2]));
-}
-
-// Bfr's limit position of every vertex, at the corner of its first incident face.
-std::vector<double> bfr_vertex_limits(const Far::TopologyRefiner &refiner,
-                                      const std::vector<double> &points) {
-    Bfr::RefinerSurfaceFactory<>::Options options;
-    options.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
-    Bfr::RefinerSurfaceFactory<> factory(refiner, options);
-    const Far::TopologyLevel &level = refiner.GetLevel(0);
-    std::vector<double> out(points.size(), std::nan(""));
-    Bfr::Surface<double> surface;
-    Bfr::Surface<double>::PointDescriptor desc(3);
-    std::vector<double> patch;
-    for (int v = 0; v < level.GetNumVertices(); ++v) {
-        Far::ConstIndexArray faces = level.GetVertexFaces(v);
-        if (faces.size() == 0) {
-            continue;
-        }
-        int f = faces[0];
-        Far::ConstIndexArray fv = level.GetFaceVertices(f);
-        int corner = 0;
-        while (corner < fv.size() && fv[corner] != v) {
-            ++corner;
-        }
-        if (!factory.InitVertexSurface<double>(f, &surface) || !surface.IsValid()) {
-            continue;
-        }
-        patch.resize(static_cast<size_t>(surface.GetNumPatchPoints()) * 3);
-        surface.PreparePatchPoints(points.data(), desc, patch.data(), desc);
-        double uv[2];
-        surface.GetParameterization().GetVertexCoord(corner, uv);
-        surface.Evaluate(uv, patch.data(), desc, &out[3 * static_cast<size_t>(v)]);
-    }
-    return out;
 }
 
 // Vertices with exactly one sharp incident edge (darts), from Far's level 0.
@@ -191,15 +155,6 @@ void check_model(Checker &ck, Model &m, double *worst_dart) {
       << ndarts << " darts, Bfr deviation there " << dart_dev / diag << " x diagonal";
     ck.note(s.str());
     *worst_dart = std::max(*worst_dart, dart_dev / diag);
-}
-
-bool read_targets(const std::string &path, std::vector<double> *out) {
-    std::ifstream in(path);
-    double x;
-    while (in >> x) {
-        out->push_back(x);
-    }
-    return !out->empty() && out->size() % 3 == 0;
 }
 
 // A model built through the C API from sampled silhouettes.

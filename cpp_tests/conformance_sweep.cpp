@@ -10,14 +10,12 @@
 #include "capi_mesh.h"
 #include "osd_shape.h"
 #include "test_support.h"
+#include "vertex_targets.h"
 
-#include <opensubdiv/bfr/refinerSurfaceFactory.h>
-#include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyLevel.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 using namespace profsubd_test;
@@ -55,33 +53,6 @@ void compare(const std::vector<double> &a, const std::vector<double> &b, double 
                       (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
-// Bfr's limit position of every vertex: evaluate the surface of one incident face at the
-// parametric coordinate of the vertex's corner.
-std::vector<double> bfr_limits(const Far::TopologyRefiner &refiner, const std::vector<double> &points) {
-    Bfr::RefinerSurfaceFactory<>::Options options;
-    options.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
-    Bfr::RefinerSurfaceFactory<> factory(refiner, options);
-    const Far::TopologyLevel &level = refiner.GetLevel(0);
-    std::vector<double> out(points.size(), std::nan(""));
-    Bfr::Surface<double> surface;
-    Bfr::Surface<double>::PointDescriptor desc(3);
-    std::vector<double> local;
-    for (int v = 0; v < level.GetNumVertices(); ++v) {
-        Far::ConstIndexArray faces = level.GetVertexFaces(v);
-        if (faces.size() == 0 || !factory.InitVertexSurface<double>(faces[0], &surface)) {
-            continue;
-        }
-        Far::ConstIndexArray fv = level.GetFaceVertices(faces[0]);
-        int corner = static_cast<int>(std::find(fv.begin(), fv.end(), v) - fv.begin());
-        local.resize(static_cast<size_t>(surface.GetNumPatchPoints()) * 3);
-        surface.PreparePatchPoints(points.data(), desc, local.data(), desc);
-        double uv[2];
-        surface.GetParameterization().GetVertexCoord(corner, uv);
-        surface.Evaluate(uv, local.data(), desc, &out[3 * static_cast<size_t>(v)]);
-    }
-    return out;
-}
-
 void check_model(Checker &ck, const Model &m) {
     ck.set_context(m.name);
     std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(m.shape);
@@ -90,21 +61,12 @@ void check_model(Checker &ck, const Model &m) {
     }
     ck.equal(m.targets.size(), m.shape.positions.size(), "one target per vertex");
     double worst = 0, diag = 0;
-    compare(bfr_limits(*refiner, m.shape.positions), m.targets, &worst, &diag);
+    compare(bfr_vertex_limits(*refiner, m.shape.positions), m.targets, &worst, &diag);
     std::ostringstream s;
     s << m.name << ": " << m.targets.size() / 3 << " vertices, Bfr limit vs target max "
       << worst / diag << " x diagonal";
     ck.note(s.str());
     ck.check(worst <= 1e-10 * diag, "Bfr's limit at every control vertex equals its target");
-}
-
-bool read_targets(const std::string &path, std::vector<double> *out) {
-    std::ifstream in(path);
-    double x;
-    while (in >> x) {
-        out->push_back(x);
-    }
-    return !out->empty() && out->size() % 3 == 0;
 }
 
 struct SweptDeleter {

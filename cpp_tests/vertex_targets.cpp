@@ -1,0 +1,51 @@
+// Targets files and OpenSubdiv's limit position of every control vertex.
+
+#include "vertex_targets.h"
+
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
+#include <opensubdiv/far/topologyLevel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+namespace profsubd_test {
+
+using namespace OpenSubdiv;
+
+bool read_targets(const std::string &path, std::vector<double> *out) {
+    std::ifstream in(path);
+    double x;
+    while (in >> x) {
+        out->push_back(x);
+    }
+    return !out->empty() && out->size() % 3 == 0;
+}
+
+std::vector<double> bfr_vertex_limits(const Far::TopologyRefiner &refiner, const std::vector<double> &points) {
+    Bfr::RefinerSurfaceFactory<>::Options options;
+    options.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
+    Bfr::RefinerSurfaceFactory<> factory(refiner, options);
+    const Far::TopologyLevel &level = refiner.GetLevel(0);
+    std::vector<double> out(points.size(), std::nan(""));
+    Bfr::Surface<double> surface;
+    Bfr::Surface<double>::PointDescriptor desc(3);
+    std::vector<double> patch;
+    for (int v = 0; v < level.GetNumVertices(); ++v) {
+        Far::ConstIndexArray faces = level.GetVertexFaces(v);
+        if (faces.size() == 0 || !factory.InitVertexSurface<double>(faces[0], &surface)) {
+            continue;
+        }
+        Far::ConstIndexArray fv = level.GetFaceVertices(faces[0]);
+        int corner = static_cast<int>(std::find(fv.begin(), fv.end(), v) - fv.begin());
+        patch.resize(static_cast<size_t>(surface.GetNumPatchPoints()) * 3);
+        surface.PreparePatchPoints(points.data(), desc, patch.data(), desc);
+        double uv[2];
+        surface.GetParameterization().GetVertexCoord(corner, uv);
+        surface.Evaluate(uv, patch.data(), desc, &out[3 * static_cast<size_t>(v)]);
+    }
+    return out;
+}
+
+}  // namespace profsubd_test

@@ -1,9 +1,10 @@
 // Benchmark: profsubd vs OpenSubdiv 3.5, single thread, double precision, same process.
 //
-// Mesh: OpenSubdiv's catmark_car refined once by Far (6,300 quads with extraordinary
-// vertices, infinitely sharp creases and a boundary), or the OBJ given as argv[1] (refined
-// once too). Built by cmake, not run by ctest: `cmake --build build --target bench_eval &&
-// build/cpp_tests/bench_eval [mesh.obj]`.
+// Mesh: OpenSubdiv's catmark_car and catmark_bishop refined once by Far and put side by side
+// (10,040 quads: extraordinary vertices, semi-sharp creases, boundaries), or the OBJs given as
+// arguments (each refined once, then merged). Built by cmake, not run by ctest:
+// `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [mesh.obj...]`
+// (`--p2`: the refinement benchmark only).
 //
 // P1: 10^6 random (face, u, v) -> position + du + dv.
 //     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
@@ -139,20 +140,46 @@ profsubd_test::OsdShape refine_once(const profsubd_test::OsdShape &s) {
     return out;
 }
 
+// `b` appended to `a` as a separate component (a's options are kept).
+void append_shape(profsubd_test::OsdShape &a, const profsubd_test::OsdShape &b) {
+    const int offset = a.num_vertices();
+    if (a.face_sizes.empty()) a.options = b.options;
+    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+    a.face_sizes.insert(a.face_sizes.end(), b.face_sizes.begin(), b.face_sizes.end());
+    for (int v : b.face_indices) a.face_indices.push_back(v + offset);
+    for (int v : b.crease_vertices) a.crease_vertices.push_back(v + offset);
+    a.crease_sharpness.insert(a.crease_sharpness.end(), b.crease_sharpness.begin(), b.crease_sharpness.end());
+    for (int v : b.corner_vertices) a.corner_vertices.push_back(v + offset);
+    a.corner_sharpness.insert(a.corner_sharpness.end(), b.corner_sharpness.begin(), b.corner_sharpness.end());
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
-    std::string path = argc > 1 ? argv[1] : profsubd_test::osd_shapes_dir() + "/catmark_car.obj";
-    profsubd_test::OsdShape base;
-    std::string err;
-    if (!profsubd_test::read_osd_shape(path, &base, &err)) {
-        std::fprintf(stderr, "bench_eval: %s: %s\n", path.c_str(), err.c_str());
-        return 1;
+    bool p2_only = false;
+    std::vector<std::string> paths;
+    for (int i = 1; i < argc; ++i) {
+        if (std::string(argv[i]) == "--p2")
+            p2_only = true;
+        else
+            paths.push_back(argv[i]);
     }
-    profsubd_test::OsdShape shape = refine_once(base);
-    std::printf("mesh: %s refined once: %d vertices, %d faces, %zu creases, %zu corners\n", path.c_str(),
-                shape.num_vertices(), shape.num_faces(), shape.crease_sharpness.size(),
-                shape.corner_sharpness.size());
+    if (paths.empty())
+        for (const char *name : {"catmark_car", "catmark_bishop"})
+            paths.push_back(profsubd_test::osd_shapes_dir() + "/" + name + ".obj");
+    profsubd_test::OsdShape shape;
+    std::string err;
+    for (const std::string &path : paths) {
+        profsubd_test::OsdShape base;
+        if (!profsubd_test::read_osd_shape(path, &base, &err)) {
+            std::fprintf(stderr, "bench_eval: %s: %s\n", path.c_str(), err.c_str());
+            return 1;
+        }
+        append_shape(shape, refine_once(base));
+        std::printf("mesh: %s refined once\n", path.c_str());
+    }
+    std::printf("mesh: %d vertices, %d faces, %zu creases, %zu corners\n", shape.num_vertices(),
+                shape.num_faces(), shape.crease_sharpness.size(), shape.corner_sharpness.size());
 
     profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
     if (!mesh) {
@@ -166,6 +193,52 @@ int main(int argc, char **argv) {
                                         : shape.options.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
                                             ? PROFSUBD_BOUNDARY_EDGE_ONLY
                                             : PROFSUBD_BOUNDARY_EDGE_AND_CORNER);
+    double checksum = 0;
+
+    // --- P2: uniform refinement to level 3.
+    const int level = 3;
+    size_t ps_counts[2] = {0, 0};
+    int far_counts[2] = {0, 0};
+    auto run_ps = [&] {
+        profsubd_mesh *out = nullptr;
+        if (profsubd_refine_uniform(mesh.get(), opts, level, &out) != PROFSUBD_OK)
+            std::fprintf(stderr, "refine: %s\n", profsubd_last_error_message());
+        profsubd_mesh_num_vertices(out, &ps_counts[0]);
+        profsubd_mesh_num_faces(out, &ps_counts[1]);
+        profsubd_mesh_free(out);
+    };
+    auto run_far = [&] {
+        auto r = profsubd_test::build_refiner(shape);
+        r->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
+        std::vector<Pt> pts(r->GetNumVerticesTotal());
+        for (int v = 0; v < shape.num_vertices(); ++v)
+            for (int k = 0; k < 3; ++k) pts[v].p[k] = shape.positions[3 * v + k];
+        Far::PrimvarRefinerReal<double> pr(*r);
+        Pt *src = pts.data();
+        for (int lev = 1; lev <= level; ++lev) {
+            Pt *dst = src + r->GetLevel(lev - 1).GetNumVertices();
+            pr.Interpolate(lev, src, dst);
+            src = dst;
+        }
+        checksum += pts.back().p[0];
+        far_counts[0] = r->GetLevel(level).GetNumVertices();
+        far_counts[1] = r->GetLevel(level).GetNumFaces();
+    };
+    double t_ref_ps = best(5, run_ps);
+    double t_ref_far = best(5, run_far);
+    double m_ps = peak_mib(run_ps);
+    double m_far = peak_mib(run_far);
+    std::printf("\nP2: uniform refinement to level %d, topology + positions (best of 5)\n", level);
+    std::printf("  profsubd_refine_uniform:               %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_ps, m_ps);
+    std::printf("  Far TopologyRefiner + PrimvarRefiner:  %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_far, m_far);
+    std::printf("  level %d: profsubd %zu vertices, %zu faces; Far %d vertices, %d faces\n", level, ps_counts[0],
+                ps_counts[1], far_counts[0], far_counts[1]);
+    std::printf("  ratio profsubd/Far: time %.3f   peak memory %.3f\n", t_ref_ps / t_ref_far, m_ps / m_far);
+    if (p2_only) {
+        std::printf("(checksum %g)\n", checksum);
+        profsubd_options_free(opts);
+        return 0;
+    }
 
     const int N = 1000000;
     const int nf = shape.num_faces();
@@ -173,7 +246,6 @@ int main(int argc, char **argv) {
     const std::vector<uint32_t> &faces = points.faces;
     const std::vector<double> &us = points.us, &vs = points.vs;
     std::vector<double> P(3 * N), DU(3 * N), DV(3 * N);
-    double checksum = 0;
 
     // --- P1: profsubd.
     profsubd_evaluator *ev = nullptr;
@@ -295,36 +367,6 @@ int main(int argc, char **argv) {
                 (t_build_ps + t_eval_ps) / (t_build_far + t_eval_far));
     std::printf("  max |profsubd - Bfr| over all coordinates: %.3g\n", maxdiff);
 
-    // --- P2: uniform refinement to level 3.
-    const int level = 3;
-    auto run_ps = [&] {
-        profsubd_mesh *out = nullptr;
-        profsubd_refine_uniform(mesh.get(), opts, level, &out);
-        profsubd_mesh_free(out);
-    };
-    auto run_far = [&] {
-        auto r = profsubd_test::build_refiner(shape);
-        r->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
-        std::vector<Pt> pts(r->GetNumVerticesTotal());
-        for (int v = 0; v < shape.num_vertices(); ++v)
-            for (int k = 0; k < 3; ++k) pts[v].p[k] = shape.positions[3 * v + k];
-        Far::PrimvarRefinerReal<double> pr(*r);
-        Pt *src = pts.data();
-        for (int lev = 1; lev <= level; ++lev) {
-            Pt *dst = src + r->GetLevel(lev - 1).GetNumVertices();
-            pr.Interpolate(lev, src, dst);
-            src = dst;
-        }
-        checksum += pts.back().p[0];
-    };
-    double t_ref_ps = best(3, run_ps);
-    double t_ref_far = best(3, run_far);
-    double m_ps = peak_mib(run_ps);
-    double m_far = peak_mib(run_far);
-    std::printf("\nP2: uniform refinement to level %d, topology + positions (best of 3)\n", level);
-    std::printf("  profsubd_refine_uniform:               %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_ps, m_ps);
-    std::printf("  Far TopologyRefiner + PrimvarRefiner:  %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_far, m_far);
-    std::printf("  ratio profsubd/Far: time %.3f   peak memory %.3f\n", t_ref_ps / t_ref_far, m_ps / m_far);
     std::printf("(checksum %g)\n", checksum);
 
     profsubd_evaluator_free(ev);

@@ -101,6 +101,10 @@ fn stencils_reproduce_positions_and_written_meshes_keep_their_sharpness() {
             let (level, pos) = refine_levels(&mesh, &opts, 2, VertexOrder::VerticesFirst).unwrap();
             let out = refine_uniform(&mesh, &opts, 2).unwrap();
             assert_eq!(out.positions(), &pos[..], "{name} {opts:?}");
+            // Refined meshes are built unchecked: they must pass the checks all the same.
+            let checked = Mesh::from_parts(out.parts().clone())
+                .unwrap_or_else(|e| panic!("{name} {opts:?}: refined mesh invalid: {e}"));
+            assert_eq!(checked, out, "{name} {opts:?}");
 
             // Written and read back: same sharpness and holes as the refined level.
             let text = to_obj_string(&out);

@@ -153,6 +153,22 @@ impl Mesh {
         })
     }
 
+    /// A mesh from parts the crate built itself and knows to satisfy every check of
+    /// [`Mesh::from_parts`] (a refined level: faces, creases and corners derived from a valid
+    /// mesh), with `face_offsets` already known. Skips the validation, which costs more than
+    /// the refinement itself; `from_parts` on the same parts must succeed (tested).
+    pub(crate) fn from_trusted_parts(parts: MeshParts, face_offsets: Vec<u32>) -> Mesh {
+        debug_assert_eq!(face_offsets.len(), parts.face_sizes.len() + 1);
+        debug_assert_eq!(
+            face_offsets.last().map(|&n| n as usize),
+            Some(parts.face_indices.len())
+        );
+        Mesh {
+            parts,
+            face_offsets,
+        }
+    }
+
     /// Vertex positions.
     pub fn positions(&self) -> &[DVec3] {
         &self.parts.positions

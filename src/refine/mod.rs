@@ -57,7 +57,12 @@ pub fn refine_uniform_ordered(
         let sharpened = |v: usize| base.vertex_topology(v).is_sharpened(options.boundary);
         let flags: Vec<bool> = (0..base.num_vertices()).map(sharpened).collect();
         let creases = output::creases_of(&base);
-        return output::to_mesh(base, mesh.positions().to_vec(), &flags, creases);
+        return Ok(output::to_mesh(
+            base,
+            mesh.positions().to_vec(),
+            &flags,
+            creases,
+        ));
     }
     let mut current = base;
     let mut positions = mesh.positions().to_vec();
@@ -77,7 +82,7 @@ pub fn refine_uniform_ordered(
             current.vertex_topology(v).is_sharpened(options.boundary);
     }
     let creases = output::creases_of_child(&current, &r);
-    output::to_mesh(r.child, positions, &flags, creases)
+    Ok(output::to_mesh(r.child, positions, &flags, creases))
 }
 
 /// Refine `mesh` `level` times and return the last level with its vertex positions.

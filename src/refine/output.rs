@@ -5,7 +5,6 @@
 use glam::DVec3;
 
 use super::step::Refinement;
-use crate::error::Result;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts};
 use crate::options::{BoundaryInterpolation, PartialOptions};
 use crate::topology::Level;
@@ -61,12 +60,16 @@ pub(super) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
 
 /// `level` (whose edge and vertex relations may be absent) with its positions as a mesh;
 /// `sharpened[v]` tells whether Far sharpens vertex `v` from topology alone.
+///
+/// The mesh is built without validation: a level refined from a valid mesh is valid (its
+/// faces index its vertices, its creases are halves of sharp parent edges, positions are
+/// weighted averages of finite positions); the refine tests validate the output.
 pub(super) fn to_mesh(
     level: Level,
     positions: Vec<DVec3>,
     sharpened: &[bool],
     creases: Vec<Crease>,
-) -> Result<Mesh> {
+) -> Mesh {
     let options = *level.options();
     let nf = level.num_faces();
     let corners = (0..level.num_vertices())
@@ -76,9 +79,7 @@ pub(super) fn to_mesh(
             sharpness: level.vertex_sharpness(v),
         })
         .collect();
-    let face_sizes = (0..nf)
-        .map(|f| level.face_vertices(f).len() as u32)
-        .collect();
+    let face_sizes = level.face_offsets.windows(2).map(|w| w[1] - w[0]).collect();
     let holes = (0..nf as u32)
         .filter(|&f| level.is_face_hole(f as usize))
         .collect();
@@ -95,5 +96,5 @@ pub(super) fn to_mesh(
             triangles: Some(options.triangles),
         },
     };
-    Mesh::from_parts(parts)
+    Mesh::from_trusted_parts(parts, level.face_offsets)
 }

@@ -848,12 +848,15 @@ enum profsubd_status profsubd_options_set_triangle_rule(struct profsubd_options 
 /**
  * Build a profile model: blend the sweeps of the four curves, sample data points, build
  * the quad cage (pole caps, tips, creases) and fit it so that the exact limit surface
- * passes through every data point. `options` may be NULL (defaults); its subdivision
- * settings are not used: the model is always fitted, and tagged, for edge-and-corner
- * boundaries and uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves
- * or settings (fewer than 2 points, NaN, curves running top to bottom, a curve crossing the
- * axis, unequal pole heights, ...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if
- * the fit misses its tolerance.
+ * passes through every data point. `options` may be NULL (defaults). The model is fitted
+ * under, and tagged with, the options' boundary interpolation and crease method
+ * (`profsubd_options_set_boundary`, `profsubd_options_set_crease_method`; default
+ * edge-and-corner and uniform; the triangle rule does not apply to the all-quad mesh).
+ * Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (fewer than 2 points,
+ * NaN, curves running top to bottom, a curve crossing the axis, unequal pole heights,
+ * boundary interpolation none with an open end, whose data points no limit surface reaches,
+ * ...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
+ * tolerance.
  */
 enum profsubd_status profsubd_profile_build(const struct profsubd_profile_curves *curves,
                                             const struct profsubd_options *options,
@@ -907,8 +910,8 @@ enum profsubd_status profsubd_options_set_sharp_angle(struct profsubd_options *o
                                                       double degrees);
 
 /**
- * Set the sharpness of crease edges at corners: a finite number >= 0 (10 or more is
- * infinitely sharp, the default).
+ * Set the sharpness of crease edges at corners (profiles, revolutions and sweeps): a finite
+ * number >= 0 (10 or more is infinitely sharp, the default).
  */
 enum profsubd_status profsubd_options_set_crease_sharpness(struct profsubd_options *options,
                                                            float sharpness);
@@ -966,11 +969,13 @@ const char *profsubd_status_string(int32_t status);
  * each), bottom to top, `r >= 0`; they are turned about the z axis. Settings (`options` may
  * be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
  * 16, 32), `profsubd_options_set_revolve_angle` (default 360),
- * `profsubd_options_set_sweep_corners` (its profile list), and the profile construction's
- * interpolation and sharp angle. Ends on the axis become smooth poles (quad caps) or tips
- * (corner-tagged). The model is fitted, and tagged, for edge-and-corner boundaries and
- * uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings
- * (the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
+ * `profsubd_options_set_sweep_corners` (its profile list), the profile construction's
+ * interpolation, sharp angle and crease sharpness, and the boundary interpolation and crease
+ * method the model is fitted under and tagged with (default edge-and-corner, uniform). Ends
+ * on the axis become smooth poles (quad caps) or tips (corner-tagged). Errors:
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings (also boundary
+ * interpolation none with an open boundary; the message says which),
+ * `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
  */
 enum profsubd_status profsubd_revolve(const double *profile,
                                       size_t num_points,
@@ -983,11 +988,13 @@ enum profsubd_status profsubd_revolve(const double *profile,
  * `trajectory` holds `num_trajectory_points` points `(x, y, z)` (3 doubles each). Settings
  * (`options` may be NULL): `profsubd_options_set_sweep_samples` (profile intervals,
  * trajectory intervals; default 16, 32), `_set_sweep_closed`, `_set_sweep_frame`,
- * `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, and the profile
- * construction's interpolation
- * and sharp angle. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings
- * (coincident points, a crossing profile, a frame that cannot be built...; the message says
- * which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
+ * `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, the profile
+ * construction's interpolation, sharp angle and crease sharpness, and the boundary
+ * interpolation and crease method the surface is fitted under and tagged with. Errors:
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (coincident points, a
+ * crossing profile, a frame that cannot be built, boundary interpolation none with an open
+ * boundary...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
+ * tolerance.
  */
 enum profsubd_status profsubd_sweep(const double *profile,
                                     size_t num_profile_points,

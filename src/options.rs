@@ -5,7 +5,9 @@
 //! edge-and-corner, uniform creasing, Catmark triangle rule.
 
 /// How boundary edges and vertices are treated (`Sdc::Options::VtxBoundaryInterpolation`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+/// In JSON inputs: `"none"`, `"edge-only"`, `"edge-and-corner"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum BoundaryInterpolation {
     /// No boundary interpolation: faces on the boundary have no limit surface
     /// (`VTX_BOUNDARY_NONE`, OBJ tag value 0).
@@ -19,7 +21,9 @@ pub enum BoundaryInterpolation {
 }
 
 /// How semi-sharp crease sharpness decays (`Sdc::Options::CreasingMethod`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+/// In JSON inputs: `"uniform"`, `"chaikin"`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum CreaseMethod {
     /// Sharpness decreases by 1 per level (`CREASE_UNIFORM`, OBJ `normal`). The default.
     #[default]

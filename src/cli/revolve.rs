@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 
+use super::profile::FitFlags;
 use super::sweep::{read_text, write_surface, SurfaceOutput};
 use crate::construct::sweep::revolve;
 use crate::construct::sweep::revolve::RevolveInput;
@@ -20,11 +21,20 @@ pub struct RevolveArgs {
     /// Where to write.
     #[command(flatten)]
     pub out: SurfaceOutput,
+    /// Subdivision options and crease sharpness.
+    #[command(flatten)]
+    pub fit: FitFlags,
 }
 
 /// Run `revolve`; returns exit code 0 on success. Nothing is written on error.
 pub fn run(args: &RevolveArgs) -> Result<i32> {
-    let input = RevolveInput::from_json(&read_text(&args.input)?, &args.input)?;
+    let mut input = RevolveInput::from_json(&read_text(&args.input)?, &args.input)?;
+    let i = &mut input;
+    args.fit.apply(
+        &mut i.boundary,
+        &mut i.crease_method,
+        &mut i.crease_sharpness,
+    );
     write_surface(&revolve(&input)?, &args.out)?;
     Ok(0)
 }

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
+use super::profile::FitFlags;
 use crate::construct::sweep::sweep::SweepInput;
 use crate::construct::sweep::{sweep, SweptSurface};
 use crate::error::{Error, Result};
@@ -21,6 +22,9 @@ pub struct SweepArgs {
     /// Where to write.
     #[command(flatten)]
     pub out: SurfaceOutput,
+    /// Subdivision options and crease sharpness.
+    #[command(flatten)]
+    pub fit: FitFlags,
 }
 
 /// Output flags of `sweep` and `revolve`.
@@ -73,7 +77,13 @@ pub(crate) fn write_surface(s: &SweptSurface, out: &SurfaceOutput) -> Result<()>
 
 /// Run `sweep`; returns exit code 0 on success. Nothing is written on error.
 pub fn run(args: &SweepArgs) -> Result<i32> {
-    let input = SweepInput::from_json(&read_text(&args.input)?, &args.input)?;
+    let mut input = SweepInput::from_json(&read_text(&args.input)?, &args.input)?;
+    let i = &mut input;
+    args.fit.apply(
+        &mut i.boundary,
+        &mut i.crease_method,
+        &mut i.crease_sharpness,
+    );
     write_surface(&sweep(&input)?, &args.out)?;
     Ok(0)
 }

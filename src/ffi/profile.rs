@@ -149,7 +149,10 @@ unsafe fn read_input(
     input.corners.c3 = corners(c.c3_corners, c.c3_num_corners, "c3_corners")?;
     input.corners.c4 = corners(c.c4_corners, c.c4_num_corners, "c4_corners")?;
     if !options.is_null() {
-        let s = handle::borrow(options, "options")?.profile;
+        let o = handle::borrow(options, "options")?;
+        input.boundary = o.subdiv.boundary.unwrap_or(input.boundary);
+        input.crease_method = o.subdiv.crease_method.unwrap_or(input.crease_method);
+        let s = o.profile;
         input.around = s.around.unwrap_or(input.around);
         input.along = s.along.unwrap_or(input.along);
         input.sharp_angle_deg = s.sharp_angle_deg.unwrap_or(input.sharp_angle_deg);
@@ -162,12 +165,15 @@ unsafe fn read_input(
 
 /// Build a profile model: blend the sweeps of the four curves, sample data points, build
 /// the quad cage (pole caps, tips, creases) and fit it so that the exact limit surface
-/// passes through every data point. `options` may be NULL (defaults); its subdivision
-/// settings are not used: the model is always fitted, and tagged, for edge-and-corner
-/// boundaries and uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves
-/// or settings (fewer than 2 points, NaN, curves running top to bottom, a curve crossing the
-/// axis, unequal pole heights, ...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if
-/// the fit misses its tolerance.
+/// passes through every data point. `options` may be NULL (defaults). The model is fitted
+/// under, and tagged with, the options' boundary interpolation and crease method
+/// (`profsubd_options_set_boundary`, `profsubd_options_set_crease_method`; default
+/// edge-and-corner and uniform; the triangle rule does not apply to the all-quad mesh).
+/// Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (fewer than 2 points,
+/// NaN, curves running top to bottom, a curve crossing the axis, unequal pole heights,
+/// boundary interpolation none with an open end, whose data points no limit surface reaches,
+/// ...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
+/// tolerance.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_profile_build(
     curves: *const profsubd_profile_curves,
@@ -281,8 +287,8 @@ pub unsafe extern "C" fn profsubd_options_set_sharp_angle(
     })
 }
 
-/// Set the sharpness of crease edges at corners: a finite number >= 0 (10 or more is
-/// infinitely sharp, the default).
+/// Set the sharpness of crease edges at corners (profiles, revolutions and sweeps): a finite
+/// number >= 0 (10 or more is infinitely sharp, the default).
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_options_set_crease_sharpness(
     options: *mut profsubd_options,

@@ -1,9 +1,11 @@
 //! C API of revolutions and sweeps: curves as caller arrays, settings on the options object,
 //! and a result object holding the fitted mesh and its data points.
 //!
-//! The profile construction's `profsubd_options_set_interpolation` and
-//! `profsubd_options_set_sharp_angle` apply here too; the setters below add the settings of
-//! revolutions and sweeps.
+//! The profile construction's `profsubd_options_set_interpolation`,
+//! `profsubd_options_set_sharp_angle` and `profsubd_options_set_crease_sharpness`, and the
+//! subdivision options' `profsubd_options_set_boundary` and
+//! `profsubd_options_set_crease_method` (what the surface is fitted under and tagged with),
+//! apply here too; the setters below add the settings of revolutions and sweeps.
 
 use crate::construct::sweep::frames::FrameKind;
 use crate::construct::sweep::revolve::RevolveInput;
@@ -86,11 +88,13 @@ unsafe fn settings(options: *const profsubd_options) -> FfiResult<Option<&'stati
 /// each), bottom to top, `r >= 0`; they are turned about the z axis. Settings (`options` may
 /// be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
 /// 16, 32), `profsubd_options_set_revolve_angle` (default 360),
-/// `profsubd_options_set_sweep_corners` (its profile list), and the profile construction's
-/// interpolation and sharp angle. Ends on the axis become smooth poles (quad caps) or tips
-/// (corner-tagged). The model is fitted, and tagged, for edge-and-corner boundaries and
-/// uniform creasing. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings
-/// (the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
+/// `profsubd_options_set_sweep_corners` (its profile list), the profile construction's
+/// interpolation, sharp angle and crease sharpness, and the boundary interpolation and crease
+/// method the model is fitted under and tagged with (default edge-and-corner, uniform). Ends
+/// on the axis become smooth poles (quad caps) or tips (corner-tagged). Errors:
+/// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings (also boundary
+/// interpolation none with an open boundary; the message says which),
+/// `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_revolve(
     profile: *const f64,
@@ -110,6 +114,9 @@ pub unsafe extern "C" fn profsubd_revolve(
             }
             input.angle_deg = s.angle_deg.unwrap_or(input.angle_deg);
             input.corners = s.corners[0].clone();
+            input.crease_sharpness = p.crease_sharpness.unwrap_or(input.crease_sharpness);
+            input.boundary = o.subdiv.boundary.unwrap_or(input.boundary);
+            input.crease_method = o.subdiv.crease_method.unwrap_or(input.crease_method);
         }
         out.write(handle::into_raw(revolve(&input)?));
         Ok(())
@@ -121,11 +128,13 @@ pub unsafe extern "C" fn profsubd_revolve(
 /// `trajectory` holds `num_trajectory_points` points `(x, y, z)` (3 doubles each). Settings
 /// (`options` may be NULL): `profsubd_options_set_sweep_samples` (profile intervals,
 /// trajectory intervals; default 16, 32), `_set_sweep_closed`, `_set_sweep_frame`,
-/// `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, and the profile
-/// construction's interpolation
-/// and sharp angle. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings
-/// (coincident points, a crossing profile, a frame that cannot be built...; the message says
-/// which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
+/// `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, the profile
+/// construction's interpolation, sharp angle and crease sharpness, and the boundary
+/// interpolation and crease method the surface is fitted under and tagged with. Errors:
+/// `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (coincident points, a
+/// crossing profile, a frame that cannot be built, boundary interpolation none with an open
+/// boundary...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
+/// tolerance.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_sweep(
     profile: *const f64,
@@ -156,6 +165,9 @@ pub unsafe extern "C" fn profsubd_sweep(
             input.profile_end = s.profile_end.clone();
             input.corners.profile = s.corners[0].clone();
             input.corners.trajectory = s.corners[1].clone();
+            input.crease_sharpness = p.crease_sharpness.unwrap_or(input.crease_sharpness);
+            input.boundary = o.subdiv.boundary.unwrap_or(input.boundary);
+            input.crease_method = o.subdiv.crease_method.unwrap_or(input.crease_method);
         }
         out.write(handle::into_raw(sweep(&input)?));
         Ok(())

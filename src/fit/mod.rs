@@ -8,6 +8,13 @@
 //! few dozen sparse products), and if that does not reach the tolerance, by sparse LU with
 //! partial pivoting followed by iterative refinement. The achieved residual is measured on
 //! the stencil rows themselves and reported.
+//!
+//! [`cage`]: the constructions' shared entry point, which tags a cage with its subdivision
+//! options and fits it under them.
+
+pub mod cage;
+
+pub use cage::{fit_cage, FitOptions, FittedCage};
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::solvers::Solve;

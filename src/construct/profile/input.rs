@@ -3,13 +3,16 @@
 //! ```json
 //! { "c1": [[x,z],...], "c2": [[y,z],...], "c3": [[x,z],...], "c4": [[y,z],...],
 //!   "around": 16, "along": 12, "sharp_angle_deg": 30, "crease_sharpness": "infinite",
-//!   "interpolation": "spline", "corners": {"c1": [4]}, "caps": "open" }
+//!   "interpolation": "spline", "corners": {"c1": [4]}, "caps": "open",
+//!   "boundary": "edge-and-corner", "crease_method": "uniform" }
 //! ```
 //! Only `c1` and `c2` are required; an unknown key is an error. Defaults:
 //! `c3` = mirror of `c1` about x = 0, `c4` = mirror of `c2` about y = 0, `around` = 16,
 //! `along` = 12, `sharp_angle_deg` = 30, `crease_sharpness` = `"infinite"` (or a number
 //! `0..=10`; 10 and above is infinitely sharp), `interpolation` = `"spline"`, `corners` = none,
-//! `caps` = `"open"`.
+//! `caps` = `"open"`, `boundary` = `"edge-and-corner"` (or `"edge-only"`, `"none"`),
+//! `crease_method` = `"uniform"` (or `"chaikin"`): the subdivision options the mesh is fitted
+//! under and tagged with (see [`crate::fit::cage`]).
 
 use std::path::Path;
 
@@ -17,7 +20,9 @@ use serde::{Deserialize, Deserializer};
 
 use crate::curves::Interpolation;
 use crate::error::{Error, Result};
+use crate::fit::FitOptions;
 use crate::mesh::SHARPNESS_INFINITE;
+use crate::options::{BoundaryInterpolation, CreaseMethod};
 
 /// Largest accepted `around` and `along`.
 pub const MAX_SAMPLES: u32 = 4096;
@@ -92,6 +97,13 @@ pub struct ProfileInput {
     /// What closes open ends. Default open.
     #[serde(default)]
     pub caps: Caps,
+    /// Boundary interpolation the mesh is fitted under and tagged with. Default
+    /// edge-and-corner.
+    #[serde(default)]
+    pub boundary: BoundaryInterpolation,
+    /// Crease method the mesh is fitted under and tagged with. Default uniform.
+    #[serde(default)]
+    pub crease_method: CreaseMethod,
 }
 
 fn default_around() -> u32 {
@@ -103,11 +115,15 @@ fn default_along() -> u32 {
 fn default_sharp_angle() -> f64 {
     30.0
 }
-fn default_crease_sharpness() -> f32 {
+/// The default `crease_sharpness`: infinitely sharp.
+pub fn default_crease_sharpness() -> f32 {
     SHARPNESS_INFINITE
 }
 
-fn deserialize_sharpness<'de, D: Deserializer<'de>>(d: D) -> std::result::Result<f32, D::Error> {
+/// Reads `crease_sharpness`: a number or `"infinite"` (shared by the sweep inputs).
+pub fn deserialize_sharpness<'de, D: Deserializer<'de>>(
+    d: D,
+) -> std::result::Result<f32, D::Error> {
     #[derive(Deserialize)]
     #[serde(untagged)]
     enum Spec {
@@ -139,7 +155,14 @@ impl ProfileInput {
             interpolation: Interpolation::default(),
             corners: ForcedCorners::default(),
             caps: Caps::default(),
+            boundary: BoundaryInterpolation::default(),
+            crease_method: CreaseMethod::default(),
         }
+    }
+
+    /// The subdivision options the model is fitted under.
+    pub fn fit_options(&self) -> FitOptions {
+        FitOptions::new(self.boundary, self.crease_method)
     }
 
     /// Parse the JSON form; `path` only names the input in messages.
@@ -178,16 +201,18 @@ impl ProfileInput {
                 self.sharp_angle_deg
             )));
         }
-        if self.crease_sharpness.is_nan()
-            || self.crease_sharpness < 0.0
-            || self.crease_sharpness.is_infinite()
-        {
-            return Err(Error::invalid_argument(format!(
-                "crease_sharpness = {} must be a finite number >= 0",
-                self.crease_sharpness
-            )));
-        }
+        check_crease_sharpness(self.crease_sharpness)
+    }
+}
+
+/// `crease_sharpness` must be a finite number ≥ 0 (shared by the sweep inputs).
+pub fn check_crease_sharpness(sharpness: f32) -> Result<()> {
+    if sharpness.is_finite() && sharpness >= 0.0 {
         Ok(())
+    } else {
+        Err(Error::invalid_argument(format!(
+            "crease_sharpness = {sharpness} must be a finite number >= 0"
+        )))
     }
 }
 

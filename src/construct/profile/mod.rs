@@ -12,7 +12,9 @@
 //!    extraordinary vertices of valence 3), pointed poles by a tip fan with an infinitely
 //!    sharp corner; crease edges along each corner ring where a curve of that quadrant
 //!    kinks;
-//! 5. [`crate::fit`]: control points whose exact limit surface interpolates the data points.
+//! 5. [`crate::fit::fit_cage`]: control points whose exact limit surface, under the input's
+//!    subdivision options (`boundary`, `crease_method`; also written as the mesh's option
+//!    tags), interpolates the data points.
 
 pub mod input;
 pub mod param;
@@ -30,9 +32,8 @@ pub use silhouettes::EndKind;
 
 use crate::construct::grid::QuadMeshBuilder;
 use crate::error::Result;
-use crate::fit::{fit_limit, FitReport};
+use crate::fit::{fit_cage, FitReport, FittedCage};
 use crate::mesh::{Mesh, MeshParts, SHARPNESS_INFINITE};
-use crate::options::{BoundaryInterpolation, CreaseMethod, PartialOptions};
 use param::CommonParam;
 use sampling::Rings;
 use silhouettes::Silhouettes;
@@ -51,17 +52,7 @@ pub struct ProfileCage {
     pub size: f64,
 }
 
-/// The options every profile mesh is built and fitted with, written into its tags:
-/// boundary edge-and-corner, uniform creasing.
-pub fn mesh_options() -> PartialOptions {
-    PartialOptions {
-        boundary: Some(BoundaryInterpolation::EdgeAndCorner),
-        crease_method: Some(CreaseMethod::Uniform),
-        triangles: None,
-    }
-}
-
-/// Steps 1–4: the cage with data points, not yet fitted.
+/// Steps 1–4: the cage with data points, not yet fitted (tagged with the input's options).
 pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
     input.check_settings()?;
     let sil = Silhouettes::new(input)?;
@@ -140,7 +131,7 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
         crease_rings.push(r);
     }
     Ok(ProfileCage {
-        parts: b.finish(mesh_options()),
+        parts: b.finish(input.fit_options().tags()),
         ends: sil.ends,
         crease_rings,
         size: sil.size,
@@ -170,14 +161,12 @@ pub struct ProfileModel {
 /// The whole pipeline: silhouettes → data points → cage → control points whose exact limit
 /// surface passes through every data point.
 ///
-/// Errors: [`crate::Error::InvalidArgument`] for bad input (each check says what and where),
-/// [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
+/// Errors: [`crate::Error::InvalidArgument`] for bad input (each check says what and where;
+/// also boundary interpolation *none* with an open end, whose data points no limit surface
+/// reaches), [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
 pub fn build(input: &ProfileInput) -> Result<ProfileModel> {
     let cage = build_cage(input)?;
-    let targets = cage.parts.positions.clone();
-    let cage_mesh = Mesh::from_parts(cage.parts)?;
-    let options = mesh_options().resolve();
-    let (mesh, fit) = fit_limit(&cage_mesh, &options, &targets)?;
+    let FittedCage { mesh, targets, fit } = fit_cage(cage.parts, input.fit_options())?;
     Ok(ProfileModel {
         mesh,
         targets,

@@ -4,9 +4,8 @@ use glam::DVec3;
 
 use super::revolve::RevolveInput;
 use super::sweep::SweepInput;
-use crate::construct::profile::mesh_options;
 use crate::error::Result;
-use crate::fit::{fit_limit, FitReport};
+use crate::fit::{fit_cage, FitOptions, FitReport, FittedCage};
 use crate::mesh::{Mesh, MeshParts};
 
 /// A fitted control mesh and the data point its limit surface passes through at each vertex.
@@ -20,25 +19,23 @@ pub struct SweptSurface {
     pub fit: FitReport,
 }
 
-/// Fit `parts` (each vertex at its data point, no option tags yet) with the profile
-/// pipeline's fitter and options ([`mesh_options`]): the exact limit surface then passes
-/// through every data point, to [`crate::fit::RELATIVE_TOLERANCE`] × their diagonal.
-pub fn fit_parts(mut parts: MeshParts) -> Result<SweptSurface> {
-    parts.options = mesh_options();
-    let cage = Mesh::from_parts(parts)?;
-    let targets = cage.positions().to_vec();
-    let (mesh, fit) = fit_limit(&cage, &mesh_options().resolve(), &targets)?;
+/// Fit `parts` (each vertex at its data point) with the profile pipeline's fitter under
+/// `options` ([`fit_cage`], which also writes them as the mesh's option tags): the exact
+/// limit surface then passes through every data point, to
+/// [`crate::fit::RELATIVE_TOLERANCE`] × their diagonal.
+pub fn fit_parts(parts: MeshParts, options: FitOptions) -> Result<SweptSurface> {
+    let FittedCage { mesh, targets, fit } = fit_cage(parts, options)?;
     Ok(SweptSurface { mesh, targets, fit })
 }
 
 /// The surface of revolution of `input`, fitted. Errors: those of [`RevolveInput::mesh_parts`]
 /// ([`crate::Error::InvalidArgument`] for bad input) and of the fit.
 pub fn revolve(input: &RevolveInput) -> Result<SweptSurface> {
-    fit_parts(input.mesh_parts()?)
+    fit_parts(input.mesh_parts()?, input.fit_options())
 }
 
 /// The sweep of `input`, fitted. Errors: those of [`SweepInput::mesh_parts`]
 /// ([`crate::Error::InvalidArgument`] for bad input) and of the fit.
 pub fn sweep(input: &SweepInput) -> Result<SweptSurface> {
-    fit_parts(input.mesh_parts()?)
+    fit_parts(input.mesh_parts()?, input.fit_options())
 }

@@ -13,7 +13,8 @@ use crate::error::{Error, Result};
 use crate::mesh::{MeshParts, SHARPNESS_INFINITE};
 use crate::options::PartialOptions;
 
-/// Quad mesh parts of `grid`; crease edges are infinitely sharp. `cap_point(end, v)` gives
+/// Quad mesh parts of `grid`; crease edges get `grid.crease_sharpness`, tips are infinitely
+/// sharp corners. `cap_point(end, v)` gives
 /// the data point of grid-cap vertex `v` at a smooth pole (`end` 0: first ring, 1: last).
 ///
 /// Orientation: quads `(ring i, j) → (ring i, j+1) → (ring i+1, j+1) → (ring i+1, j)`, reversed
@@ -60,11 +61,11 @@ pub fn grid_mesh(
         }
     }
     for &i in &grid.crease_rings {
-        b.crease_ring(&ids[i], 0..ring_spans, SHARPNESS_INFINITE);
+        b.crease_ring(&ids[i], 0..ring_spans, grid.crease_sharpness);
     }
     for &j in &grid.crease_columns {
         let column: Vec<u32> = ids.iter().map(|r| r[j]).collect();
-        b.crease_ring(&column, 0..row_spans, SHARPNESS_INFINITE);
+        b.crease_ring(&column, 0..row_spans, grid.crease_sharpness);
     }
     Ok(b.finish(PartialOptions::default()))
 }

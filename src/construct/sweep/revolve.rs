@@ -2,13 +2,18 @@
 //!
 //! ```json
 //! { "profile": [[r,z],...], "angle_deg": 360, "samples_profile": 16, "samples_around": 32,
-//!   "interpolation": "spline", "sharp_angle_deg": 30, "corners": [3] }
+//!   "interpolation": "spline", "sharp_angle_deg": 30, "corners": [3],
+//!   "crease_sharpness": "infinite", "boundary": "edge-and-corner", "crease_method": "uniform" }
 //! ```
 //! Only `profile` is required (points from bottom to top, `r ≥ 0`); an unknown key is an
 //! error. Defaults: `angle_deg` = 360 (a full turn, closed; less than 360 leaves boundary
 //! edges along the first and last meridians), `samples_profile` = 16 sample intervals from
 //! bottom to top, `samples_around` = 32 meridian intervals, `interpolation` = `"spline"`,
-//! `sharp_angle_deg` = 30, `corners` = none (profile point indices forced to be corners).
+//! `sharp_angle_deg` = 30, `corners` = none (profile point indices forced to be corners),
+//! `crease_sharpness` = `"infinite"` (or a number ≥ 0, as in the profile construction; tips
+//! stay infinitely sharp corners), `boundary` = `"edge-and-corner"` (`"edge-only"`, `"none"`)
+//! and `crease_method` = `"uniform"` (`"chaikin"`): the options the mesh is fitted under and
+//! tagged with ([`crate::fit::cage`]).
 //!
 //! *Poles*: a profile end on the axis (`r = 0`) closes the surface there. The profile is
 //! extended by its mirror image across the axis before it is interpolated, so the spline is
@@ -30,11 +35,16 @@ use super::mesh::grid_mesh;
 use super::profile::check_no_crossing;
 use super::sweep::{sample_counts_ok, GridEnd, SweepGrid};
 use crate::construct::pole_cap::CapVertex;
+use crate::construct::profile::input::{
+    check_crease_sharpness, default_crease_sharpness, deserialize_sharpness,
+};
 use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
 use crate::curves::corners::detect_chord_corners;
 use crate::curves::{Interpolation, SpaceCurve};
 use crate::error::{Error, Result};
+use crate::fit::FitOptions;
 use crate::mesh::MeshParts;
+use crate::options::{BoundaryInterpolation, CreaseMethod};
 
 /// A surface of revolution. See the module documentation for the JSON form and defaults.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -61,6 +71,20 @@ pub struct RevolveInput {
     /// Default none.
     #[serde(default)]
     pub corners: Vec<usize>,
+    /// Sharpness of the crease rings at profile corners (tips stay infinitely sharp): a
+    /// number ≥ 0, or `"infinite"` (the default).
+    #[serde(
+        default = "default_crease_sharpness",
+        deserialize_with = "deserialize_sharpness"
+    )]
+    pub crease_sharpness: f32,
+    /// Boundary rule of the fit and the mesh's tag (matters for a partial turn). Default
+    /// edge-and-corner.
+    #[serde(default)]
+    pub boundary: BoundaryInterpolation,
+    /// Crease method of the fit and the mesh's tag. Default uniform.
+    #[serde(default)]
+    pub crease_method: CreaseMethod,
 }
 
 fn default_angle() -> f64 {
@@ -209,7 +233,15 @@ impl RevolveInput {
             interpolation: Interpolation::default(),
             sharp_angle_deg: default_sharp_angle(),
             corners: Vec::new(),
+            crease_sharpness: default_crease_sharpness(),
+            boundary: BoundaryInterpolation::default(),
+            crease_method: CreaseMethod::default(),
         }
+    }
+
+    /// The subdivision options the surface is fitted under.
+    pub fn fit_options(&self) -> FitOptions {
+        FitOptions::new(self.boundary, self.crease_method)
     }
 
     /// Parse the JSON form; `path` only names the input in messages.
@@ -247,7 +279,7 @@ impl RevolveInput {
                 self.sharp_angle_deg
             )));
         }
-        Ok(())
+        check_crease_sharpness(self.crease_sharpness)
     }
 
     /// Validate and interpolate the profile.
@@ -354,6 +386,7 @@ impl RevolveInput {
             crease_columns: Vec::new(),
             flip: false,
             ends,
+            crease_sharpness: self.crease_sharpness,
         };
         Ok((grid, samples.iter().map(|c| c.s).collect()))
     }

@@ -5,7 +5,8 @@
 //!   "closed_trajectory": false, "frame": "rmf", "samples_profile": 16,
 //!   "samples_trajectory": 32, "scale": [1, 1], "profile_end": [[a,b],...],
 //!   "interpolation": "spline", "sharp_angle_deg": 30,
-//!   "corners": {"profile": [2], "trajectory": [5]} }
+//!   "corners": {"profile": [2], "trajectory": [5]}, "crease_sharpness": "infinite",
+//!   "boundary": "edge-and-corner", "crease_method": "uniform" }
 //! ```
 //! Only `profile` and `trajectory` are required; an unknown key is an error. Defaults:
 //! `closed_profile` = `closed_trajectory` = `false`, `frame` = `"rmf"` (or `"fixed"`,
@@ -16,7 +17,10 @@
 //! into this second profile, which must have the same point count), `interpolation` =
 //! `"spline"` (`"polyline"` takes the points literally), `sharp_angle_deg` = 30 (points turning
 //! by more are corners), `corners` = none (point indices forced to be corners; for an open
-//! curve only interior points). Profile coordinates `(a, b)` run along the frame's normal and
+//! curve only interior points), `crease_sharpness` = `"infinite"` (or a number ≥ 0, as in the
+//! profile construction), `boundary` = `"edge-and-corner"` (`"edge-only"`, `"none"`) and
+//! `crease_method` = `"uniform"` (`"chaikin"`): the options the mesh is fitted under and
+//! tagged with ([`crate::fit::cage`]). Profile coordinates `(a, b)` run along the frame's normal and
 //! binormal; the profile's origin follows the trajectory.
 //!
 //! Features: a profile corner becomes a column of crease edges along the sweep direction, a
@@ -33,10 +37,15 @@ use super::frames::FrameKind;
 use super::mesh::grid_mesh;
 use super::profile::SweptProfile;
 use super::trajectory::{Trajectory, TrajectorySample};
+use crate::construct::profile::input::{
+    check_crease_sharpness, default_crease_sharpness, deserialize_sharpness,
+};
 use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
 use crate::curves::Interpolation;
 use crate::error::{Error, Result};
+use crate::fit::FitOptions;
 use crate::mesh::MeshParts;
+use crate::options::{BoundaryInterpolation, CreaseMethod};
 
 /// A sweep: profile, trajectory, frame and sampling. See the module documentation for the
 /// JSON form and the defaults.
@@ -77,6 +86,20 @@ pub struct SweepInput {
     /// Point indices forced to be corners. Default none.
     #[serde(default)]
     pub corners: SweepCorners,
+    /// Sharpness of the crease columns (profile corners) and rings (trajectory corners):
+    /// a number ≥ 0 (10 or more: infinitely sharp), or `"infinite"` (the default).
+    #[serde(
+        default = "default_crease_sharpness",
+        deserialize_with = "deserialize_sharpness"
+    )]
+    pub crease_sharpness: f32,
+    /// Boundary interpolation for the fit and the tags (open curves have boundaries).
+    /// Default edge-and-corner.
+    #[serde(default)]
+    pub boundary: BoundaryInterpolation,
+    /// Crease decay for the fit and the tags. Default uniform.
+    #[serde(default)]
+    pub crease_method: CreaseMethod,
 }
 
 /// Point indices forced to be corners, per curve.
@@ -141,6 +164,8 @@ pub struct SweepGrid {
     pub flip: bool,
     /// How the first and the last ring are finished.
     pub ends: [GridEnd; 2],
+    /// Sharpness of the crease rings and columns.
+    pub crease_sharpness: f32,
 }
 
 impl SweepInput {
@@ -159,7 +184,15 @@ impl SweepInput {
             interpolation: Interpolation::default(),
             sharp_angle_deg: default_sharp_angle(),
             corners: SweepCorners::default(),
+            crease_sharpness: default_crease_sharpness(),
+            boundary: BoundaryInterpolation::default(),
+            crease_method: CreaseMethod::default(),
         }
+    }
+
+    /// The subdivision options the surface is fitted under.
+    pub fn fit_options(&self) -> FitOptions {
+        FitOptions::new(self.boundary, self.crease_method)
     }
 
     /// Parse the JSON form; `path` only names the input in messages.
@@ -198,7 +231,7 @@ impl SweepInput {
                  and no profile_end (the surface would not close)",
             ));
         }
-        Ok(())
+        check_crease_sharpness(self.crease_sharpness)
     }
 
     /// Sample the sweep: validate everything and compute the grid of data points.
@@ -247,6 +280,7 @@ impl SweepInput {
             crease_columns: section.corners,
             flip: section.clockwise,
             ends: [GridEnd::Open; 2],
+            crease_sharpness: self.crease_sharpness,
         })
     }
 }

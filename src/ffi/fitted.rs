@@ -9,7 +9,7 @@ use crate::construct::sweep::SweptSurface;
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh};
 use crate::ffi::panic::status_call;
-use crate::ffi::ptr::{arg_out, arg_out_opt, fill, CopyOut};
+use crate::ffi::ptr::{arg_out, arg_out_opt, copy_slice};
 use crate::ffi::status::profsubd_status;
 use crate::fit::FitReport;
 use crate::mesh::Mesh;
@@ -70,14 +70,15 @@ pub unsafe fn get_targets<H: Handle>(
 where
     H::Inner: Fitted,
 {
-    status_call(|| {
-        let targets = handle::borrow(model, name)?.targets();
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        c.finish(3 * targets.len(), "doubles", || {
-            fill(buf, targets.iter().flat_map(|t| t.to_array()))
-        })
-    })
+    copy_slice(
+        (model, name),
+        (out, "out", capacity, needed),
+        (1, "doubles"),
+        |m| {
+            let targets = m.targets();
+            Ok((3 * targets.len(), targets.iter().flat_map(|t| t.to_array())))
+        },
+    )
 }
 
 /// Write the fit's residual and tolerance to the outputs that are not NULL.

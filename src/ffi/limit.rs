@@ -8,7 +8,7 @@ use crate::ffi::handle::{self, Handle};
 use crate::ffi::mesh::{mesh_arg, profsubd_mesh};
 use crate::ffi::options::{profsubd_options, resolve};
 use crate::ffi::panic::{guard, status_call};
-use crate::ffi::ptr::{arg_out, arg_slice, fill, CopyOut};
+use crate::ffi::ptr::{all_of, arg_out, arg_slice, copy_slice, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
 
 /// Values for the `quantity` of `profsubd_limit_stencils_new` (passed as `int32_t`).
@@ -115,14 +115,12 @@ pub unsafe extern "C" fn profsubd_stencil_table_get_offsets(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let t = table_arg(table)?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        c.finish(t.offsets.len(), "offsets", || {
-            fill(buf, t.offsets.iter().copied())
-        })
-    })
+    copy_slice(
+        (table, "table"),
+        (out, "out", capacity, needed),
+        (1, "offsets"),
+        |t| Ok(all_of(&t.offsets)),
+    )
 }
 
 /// Copy the control vertex of every entry into `out`. `capacity` and `*needed` count
@@ -134,14 +132,12 @@ pub unsafe extern "C" fn profsubd_stencil_table_get_indices(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let t = table_arg(table)?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        c.finish(t.indices.len(), "entries", || {
-            fill(buf, t.indices.iter().copied())
-        })
-    })
+    copy_slice(
+        (table, "table"),
+        (out, "out", capacity, needed),
+        (1, "entries"),
+        |t| Ok(all_of(&t.indices)),
+    )
 }
 
 /// Copy the weight of every entry into `out`. `capacity` and `*needed` count entries
@@ -153,14 +149,12 @@ pub unsafe extern "C" fn profsubd_stencil_table_get_weights(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let t = table_arg(table)?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        c.finish(t.weights.len(), "entries", || {
-            fill(buf, t.weights.iter().copied())
-        })
-    })
+    copy_slice(
+        (table, "table"),
+        (out, "out", capacity, needed),
+        (1, "entries"),
+        |t| Ok(all_of(&t.weights)),
+    )
 }
 
 /// Apply every row to `points` (`num_points` points of 3 doubles, one per control vertex)

@@ -9,7 +9,7 @@ use glam::DVec3;
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::panic::{guard, status_call};
-use crate::ffi::ptr::{arg_out, arg_slice, fill, CopyOut};
+use crate::ffi::ptr::{all_of, arg_out, arg_slice, copy_slice, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts, MAX_COMPONENTS};
 use crate::topology::Level;
@@ -312,33 +312,15 @@ pub unsafe extern "C" fn profsubd_mesh_get_positions(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let m = mesh_arg(mesh, "mesh")?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        let ps = m.positions();
-        c.finish(3 * ps.len(), "doubles", || {
-            fill(buf, ps.iter().flat_map(|p| p.to_array()))
-        })
-    })
-}
-
-/// A copy-out query of one `u32` array of the mesh (one element per item).
-unsafe fn copy_u32s(
-    mesh: *const profsubd_mesh,
-    (out, name): (*mut u32, &str),
-    capacity: usize,
-    needed: *mut usize,
-    unit: &str,
-    data: impl FnOnce(&Mesh) -> &[u32],
-) -> profsubd_status {
-    status_call(|| {
-        let m = mesh_arg(mesh, "mesh")?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, name)?;
-        let data = data(m);
-        c.finish(data.len(), unit, || fill(buf, data.iter().copied()))
-    })
+    copy_slice(
+        (mesh, "mesh"),
+        (out, "out", capacity, needed),
+        (1, "doubles"),
+        |m| {
+            let ps = m.mesh.positions();
+            Ok((3 * ps.len(), ps.iter().flat_map(|p| p.to_array())))
+        },
+    )
 }
 
 /// Copy the number of vertices of each face. `capacity` and `*needed` count faces.
@@ -349,13 +331,11 @@ pub unsafe extern "C" fn profsubd_mesh_get_face_sizes(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    copy_u32s(
-        mesh,
-        (out, "out"),
-        capacity,
-        needed,
-        "faces",
-        Mesh::face_sizes,
+    copy_slice(
+        (mesh, "mesh"),
+        (out, "out", capacity, needed),
+        (1, "faces"),
+        |m| Ok(all_of(m.mesh.face_sizes())),
     )
 }
 
@@ -368,13 +348,11 @@ pub unsafe extern "C" fn profsubd_mesh_get_face_indices(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    copy_u32s(
-        mesh,
-        (out, "out"),
-        capacity,
-        needed,
-        "indices",
-        Mesh::face_indices,
+    copy_slice(
+        (mesh, "mesh"),
+        (out, "out", capacity, needed),
+        (1, "indices"),
+        |m| Ok(all_of(m.mesh.face_indices())),
     )
 }
 
@@ -386,14 +364,36 @@ pub unsafe extern "C" fn profsubd_mesh_get_holes(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    copy_u32s(
-        mesh,
-        (faces, "faces"),
-        capacity,
-        needed,
-        "holes",
-        Mesh::holes,
+    copy_slice(
+        (mesh, "mesh"),
+        (faces, "faces", capacity, needed),
+        (1, "holes"),
+        |m| Ok(all_of(m.mesh.holes())),
     )
+}
+
+/// A copy-out query of the crease or corner tags: `W` vertex indices per tag into
+/// `vertices`, one sharpness per tag into `sharpness`.
+unsafe fn copy_tags<K, const W: usize>(
+    mesh: *const profsubd_mesh,
+    (vertices, sharpness): (*mut u32, *mut f32),
+    capacity: usize,
+    needed: *mut usize,
+    unit: &str,
+    tags: fn(&Mesh) -> &[K],
+    tag: fn(&K) -> ([u32; W], f32),
+) -> profsubd_status {
+    status_call(|| {
+        let m = mesh_arg(mesh, "mesh")?;
+        let c = CopyOut::new(capacity, needed)?;
+        let vs = c.buffer(vertices, W, "vertices")?;
+        let ss = c.buffer(sharpness, 1, "sharpness")?;
+        let tags = tags(m);
+        c.finish(tags.len(), unit, || {
+            fill(vs, tags.iter().flat_map(|k| tag(k).0));
+            fill(ss, tags.iter().map(|k| tag(k).1));
+        })
+    })
 }
 
 /// Copy the sharp edges: 2 vertex indices per crease into `vertices` and one sharpness per
@@ -407,17 +407,15 @@ pub unsafe extern "C" fn profsubd_mesh_get_creases(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let m = mesh_arg(mesh, "mesh")?;
-        let c = CopyOut::new(capacity, needed)?;
-        let vs = c.buffer(vertices, 2, "vertices")?;
-        let ss = c.buffer(sharpness, 1, "sharpness")?;
-        let creases = m.creases();
-        c.finish(creases.len(), "creases", || {
-            fill(vs, creases.iter().flat_map(|k| k.vertices));
-            fill(ss, creases.iter().map(|k| k.sharpness));
-        })
-    })
+    copy_tags(
+        mesh,
+        (vertices, sharpness),
+        capacity,
+        needed,
+        "creases",
+        Mesh::creases,
+        |k: &Crease| (k.vertices, k.sharpness),
+    )
 }
 
 /// Copy the sharp vertices: one vertex index and one sharpness per corner. `capacity` and
@@ -430,17 +428,15 @@ pub unsafe extern "C" fn profsubd_mesh_get_corners(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let m = mesh_arg(mesh, "mesh")?;
-        let c = CopyOut::new(capacity, needed)?;
-        let vs = c.buffer(vertices, 1, "vertices")?;
-        let ss = c.buffer(sharpness, 1, "sharpness")?;
-        let corners = m.corners();
-        c.finish(corners.len(), "corners", || {
-            fill(vs, corners.iter().map(|k| k.vertex));
-            fill(ss, corners.iter().map(|k| k.sharpness));
-        })
-    })
+    copy_tags(
+        mesh,
+        (vertices, sharpness),
+        capacity,
+        needed,
+        "corners",
+        Mesh::corners,
+        |k: &Corner| ([k.vertex], k.sharpness),
+    )
 }
 
 #[cfg(test)]

@@ -3,13 +3,14 @@
 
 use std::borrow::Cow;
 use std::mem::size_of;
+use std::ops::Deref;
 
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle;
 use crate::ffi::mesh::{count_query, profsubd_mesh, MeshData};
 use crate::ffi::options::{profsubd_options, resolve};
 use crate::ffi::panic::status_call;
-use crate::ffi::ptr::{arg_ref, fill, CopyOut};
+use crate::ffi::ptr::{arg_ref, copy_slice};
 use crate::ffi::status::profsubd_status;
 use crate::mesh::validate::MeshReport;
 use crate::topology::Level;
@@ -34,15 +35,18 @@ pub unsafe extern "C" fn profsubd_mesh_get_edges(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let level = handle::borrow(mesh, "mesh")?.level();
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(vertices, 2, "vertices")?;
-        let ne = level.num_edges();
-        c.finish(ne, "edges", || {
-            fill(buf, (0..ne).flat_map(|e| level.edge_vertices(e)))
-        })
-    })
+    copy_slice(
+        (mesh, "mesh"),
+        (vertices, "vertices", capacity, needed),
+        (2, "edges"),
+        |m| {
+            Ok(per_component(
+                m.level(),
+                Level::num_edges,
+                Level::edge_vertices,
+            ))
+        },
+    )
 }
 
 /// Copy the valence of each vertex: the number of edges incident to it (0 for a vertex in
@@ -54,15 +58,16 @@ pub unsafe extern "C" fn profsubd_mesh_get_valences(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
-    status_call(|| {
-        let level = handle::borrow(mesh, "mesh")?.level();
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        let nv = level.num_vertices();
-        c.finish(nv, "vertices", || {
-            fill(buf, (0..nv).map(|v| level.valence(v) as u32))
-        })
-    })
+    copy_slice(
+        (mesh, "mesh"),
+        (out, "out", capacity, needed),
+        (1, "vertices"),
+        |m| {
+            Ok(per_component(m.level(), Level::num_vertices, |l, v| {
+                [l.valence(v) as u32]
+            }))
+        },
+    )
 }
 
 /// The base level under `options` (NULL: the mesh's tags and the defaults): the cached one
@@ -79,7 +84,18 @@ unsafe fn level_for<'a>(
     })
 }
 
-/// A copy-out query of one `f32` per component of the base level.
+/// The count and the values (`value(level, i)` flattened, `i` below `count(level)`) of one
+/// property of every edge or every vertex of `level`, for [`copy_slice`].
+fn per_component<'a, V: IntoIterator + 'a>(
+    level: impl Deref<Target = Level> + 'a,
+    count: fn(&Level) -> usize,
+    value: impl Fn(&Level, usize) -> V + 'a,
+) -> (usize, impl Iterator<Item = V::Item> + 'a) {
+    let n = count(&level);
+    (n, (0..n).flat_map(move |i| value(&level, i)))
+}
+
+/// A copy-out query of one `f32` per edge or vertex of the base level under `options`.
 unsafe fn copy_level_floats(
     mesh: *const profsubd_mesh,
     options: *const profsubd_options,
@@ -88,14 +104,15 @@ unsafe fn copy_level_floats(
     count: fn(&Level) -> usize,
     value: fn(&Level, usize) -> f32,
 ) -> profsubd_status {
-    status_call(|| {
-        let m = handle::borrow(mesh, "mesh")?;
-        let c = CopyOut::new(capacity, needed)?;
-        let buf = c.buffer(out, 1, "out")?;
-        let level = level_for(m, options)?;
-        let n = count(&level);
-        c.finish(n, unit, || fill(buf, (0..n).map(|i| value(&level, i))))
-    })
+    copy_slice(
+        (mesh, "mesh"),
+        (out, "out", capacity, needed),
+        (1, unit),
+        |m| {
+            let level = level_for(m, options)?;
+            Ok(per_component(level, count, move |l, i| [value(l, i)]))
+        },
+    )
 }
 
 /// Copy the sharpness OpenSubdiv's Far gives each edge before refinement

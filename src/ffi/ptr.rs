@@ -9,8 +9,10 @@ use std::mem::{size_of, MaybeUninit};
 use std::path::PathBuf;
 
 use crate::ffi::error::{FfiError, FfiResult};
+use crate::ffi::handle::{self, Handle};
+use crate::ffi::panic::status_call;
 use crate::ffi::status::profsubd_status::{
-    PROFSUBD_ERROR_BUFFER_TOO_SMALL, PROFSUBD_ERROR_NULL_ARGUMENT,
+    self, PROFSUBD_ERROR_BUFFER_TOO_SMALL, PROFSUBD_ERROR_NULL_ARGUMENT,
 };
 
 fn check_aligned<T>(p: *const T, name: &str) -> FfiResult<()> {
@@ -190,6 +192,35 @@ pub fn fill<T>(dst: &mut [MaybeUninit<T>], src: impl IntoIterator<Item = T>) {
     for (d, s) in dst.iter_mut().zip(src) {
         d.write(s);
     }
+}
+
+/// A whole copy-out export of one array read from a handle: under the panic guard, borrow
+/// `handle` (its pointer and argument name), check `needed` and the buffer `out` (pointer and
+/// argument name) of `capacity` items of `width` elements each, then `items` gives the item
+/// count and the elements, copied by the [`CopyOut`] protocol (`unit` names the items in the
+/// "buffer too small" message). `items` runs after every argument check, so its errors come
+/// last; its elements are only read when they fit.
+pub unsafe fn copy_slice<'a, H: Handle, T, I: IntoIterator<Item = T>>(
+    (handle, handle_name): (*const H, &str),
+    (out, out_name, capacity, needed): (*mut T, &str, usize, *mut usize),
+    (width, unit): (usize, &str),
+    items: impl FnOnce(&'a H::Inner) -> FfiResult<(usize, I)>,
+) -> profsubd_status
+where
+    H::Inner: 'a,
+{
+    status_call(|| {
+        let source = handle::borrow::<H>(handle, handle_name)?;
+        let c = CopyOut::new(capacity, needed)?;
+        let buf = c.buffer(out, width, out_name)?;
+        let (count, elements) = items(source)?;
+        c.finish(count, unit, || fill(buf, elements))
+    })
+}
+
+/// The item count and the elements of `items` (one element per item), for [`copy_slice`].
+pub fn all_of<T: Copy>(items: &[T]) -> (usize, std::iter::Copied<std::slice::Iter<'_, T>>) {
+    (items.len(), items.iter().copied())
 }
 
 #[cfg(test)]

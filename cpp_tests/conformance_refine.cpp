@@ -499,7 +499,7 @@ void compare_with_openmesh(Checker &c, Stats &stats, const std::string &name, co
 }
 
 // Every boundary rule and crease method (the file's triangle rule), levels 1-3, against Far,
-// and level 2 with faces-first vertex order;
+// and levels 1-3 with faces-first vertex order (the file's options);
 // levels 1-2 against OpenMesh where it applies. Returns 1 if OpenMesh was compared.
 int compare_file(Checker &c, Stats &far_stats, Stats &om_stats, const std::string &name,
                  const OsdShape &s) {
@@ -513,7 +513,7 @@ int compare_file(Checker &c, Stats &far_stats, Stats &om_stats, const std::strin
         }
     }
     // Far's other vertex order (orderVerticesFromFacesFirst), with the file's options.
-    compare_with_far(c, far_stats, name, s, s.options, 2, true);
+    for (int level = 1; level <= 3; ++level) compare_with_far(c, far_stats, name, s, s.options, level, true);
     if (!openmesh_applies(s, s.options)) return 0;
     for (int level = 1; level <= 2; ++level) compare_with_openmesh(c, om_stats, name, s, s.options, level);
     return 1;
@@ -587,6 +587,9 @@ int main() {
                 }
             }
         }
+        // Far's faces-first vertex order, profsubd's default options.
+        for (int level = 1; level <= 3; ++level)
+            compare_with_far(c, far_stats, name, s, profsubd_test::profsubd_default_options(), level, true);
         Sdc::Options plain;
         if (openmesh_applies(s, plain)) {
             ++random_om;

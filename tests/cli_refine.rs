@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use profsubd::io::obj::read_obj_file;
-use profsubd::refine::refine_uniform;
+use profsubd::refine::{refine_uniform, refine_uniform_ordered, VertexOrder};
 use profsubd::{BoundaryInterpolation, SubdivOptions};
 
 fn profsubd(args: &[&str]) -> Output {
@@ -58,6 +58,30 @@ fn refine_writes_far_ordered_mesh_with_decayed_tags() {
         Some(BoundaryInterpolation::EdgeAndCorner)
     );
     assert_eq!(lib.options().resolve(), SubdivOptions::default());
+}
+
+#[test]
+fn faces_first_order_under_both_spellings() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = example("cube_creased.obj");
+    let base = read_obj_file(&input).unwrap().mesh;
+    let opts = base.options().resolve();
+    let lib = refine_uniform_ordered(&base, &opts, 2, VertexOrder::FacesFirst).unwrap();
+    let default = refine_uniform(&base, &opts, 2).unwrap();
+    assert_ne!(lib.positions(), default.positions());
+    for flag in ["--faces-first", "--face-verts-first"] {
+        let out = dir.path().join("r.obj");
+        let (i, o) = (input.to_str().unwrap(), out.to_str().unwrap());
+        let run = profsubd(&["refine", i, "--level", "2", flag, "-o", o]);
+        assert!(
+            run.status.success(),
+            "{flag}: {}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        let written = read_obj_file(&out).unwrap().mesh;
+        assert_eq!(written.positions(), lib.positions(), "{flag}");
+        assert_eq!(written.face_indices(), lib.face_indices(), "{flag}");
+    }
 }
 
 #[test]

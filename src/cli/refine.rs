@@ -23,8 +23,8 @@ pub struct RefineArgs {
     #[arg(short, long, value_name = "OUT.obj")]
     pub output: PathBuf,
     /// Number child vertices of faces first, then of edges, then of vertices (Far's
-    /// `orderVerticesFromFacesFirst`); default: vertices, faces, edges.
-    #[arg(long)]
+    /// `orderVerticesFromFacesFirst`, Vtr's `faceVertsFirst`); default: vertices, faces, edges.
+    #[arg(long, visible_alias = "face-verts-first")]
     pub faces_first: bool,
     /// Subdivision options.
     #[command(flatten)]

@@ -55,14 +55,10 @@ pub fn refine_uniform_ordered(
     let base = Level::from_mesh_with_options(mesh, options);
     if level == 0 {
         let sharpened = |v: usize| base.vertex_topology(v).is_sharpened(options.boundary);
-        let flags: Vec<bool> = (0..base.num_vertices()).map(sharpened).collect();
+        let corners = output::corners_of(&base, sharpened);
         let creases = output::creases_of(&base);
-        return Ok(output::to_mesh(
-            base,
-            mesh.positions().to_vec(),
-            &flags,
-            creases,
-        ));
+        let positions = mesh.positions().to_vec();
+        return Ok(output::to_mesh(base, positions, corners, creases));
     }
     let mut current = base;
     let mut positions = mesh.positions().to_vec();
@@ -76,13 +72,14 @@ pub fn refine_uniform_ordered(
     // parent's topology, a child edge its parent's boundary and non-manifold status).
     let r = step::refine_last(&current, order);
     positions = interpolate(&current, &r, &positions);
-    let mut flags = vec![false; r.child.num_vertices()];
-    for v in 0..current.num_vertices() {
-        flags[r.vertex_child_vertex(v) as usize] =
-            current.vertex_topology(v).is_sharpened(options.boundary);
-    }
+    // Only the children of vertices can be sharpened from topology, as their parent was.
+    let sharpened = |cv: usize| {
+        r.child_vertex_parent_vertex(cv)
+            .is_some_and(|v| current.vertex_topology(v).is_sharpened(options.boundary))
+    };
+    let corners = output::corners_of(&r.child, sharpened);
     let creases = output::creases_of_child(&current, &r);
-    Ok(output::to_mesh(r.child, positions, &flags, creases))
+    Ok(output::to_mesh(r.child, positions, corners, creases))
 }
 
 /// Refine `mesh` `level` times and return the last level with its vertex positions.

@@ -58,8 +58,20 @@ pub(super) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
     out
 }
 
-/// `level` (whose edge and vertex relations may be absent) with its positions as a mesh;
-/// `sharpened[v]` tells whether Far sharpens vertex `v` from topology alone.
+/// The corner tags of `level` (whose edge and vertex relations may be absent): its sharp
+/// vertices, except those `sharpened(v)` says Far sharpens from topology alone (asked only of
+/// sharp vertices).
+pub(super) fn corners_of(level: &Level, sharpened: impl Fn(usize) -> bool) -> Vec<Corner> {
+    (0..level.num_vertices())
+        .filter(|&v| level.vertex_sharpness(v) > 0.0 && !sharpened(v))
+        .map(|v| Corner {
+            vertex: v as u32,
+            sharpness: level.vertex_sharpness(v),
+        })
+        .collect()
+}
+
+/// `level` with its positions, corners and creases as a mesh.
 ///
 /// The mesh is built without validation: a level refined from a valid mesh is valid (its
 /// faces index its vertices, its creases are halves of sharp parent edges, positions are
@@ -67,18 +79,11 @@ pub(super) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
 pub(super) fn to_mesh(
     level: Level,
     positions: Vec<DVec3>,
-    sharpened: &[bool],
+    corners: Vec<Corner>,
     creases: Vec<Crease>,
 ) -> Mesh {
     let options = *level.options();
     let nf = level.num_faces();
-    let corners = (0..level.num_vertices())
-        .filter(|&v| level.vertex_sharpness(v) > 0.0 && !sharpened[v])
-        .map(|v| Corner {
-            vertex: v as u32,
-            sharpness: level.vertex_sharpness(v),
-        })
-        .collect();
     let face_sizes = level.face_offsets.windows(2).map(|w| w[1] - w[0]).collect();
     let holes = (0..nf as u32)
         .filter(|&f| level.is_face_hole(f as usize))

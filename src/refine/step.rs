@@ -68,6 +68,11 @@ impl Refinement {
     pub fn vertex_child_vertex(&self, v: usize) -> u32 {
         self.first_from_vertices() + v as u32
     }
+    /// The parent vertex of child vertex `cv`, if `cv` is the child of a vertex.
+    pub fn child_vertex_parent_vertex(&self, cv: usize) -> Option<usize> {
+        let v = cv.checked_sub(self.first_from_vertices() as usize)?;
+        (v < self.parent_counts[0] as usize).then_some(v)
+    }
     /// Child vertex (face point) of parent face `f`.
     pub fn face_child_vertex(&self, f: usize) -> u32 {
         self.first_from_faces() + f as u32

@@ -1,14 +1,21 @@
 //! Corner detection on a point list, and one-sided tangent estimates.
 //!
-//! Two detectors: the planar profile curves compare parabola tangent estimates
-//! ([`detect_corners`]); the sweep's space curves, open or closed, compare chords
-//! ([`detect_chord_corners`]).
-//!
-//! The tangent on each side of a point is estimated from the parabola (chord-length
-//! parameter) through the point and its two neighbours on that side, or from the chord when
-//! only one neighbour exists. A point is a corner when those two tangents differ by more than
-//! the sharp angle: for densely sampled smooth curves they agree to second order, while at a
-//! real kink they differ by the kink's angle.
+//! Two detectors, because the two kinds of input mean different things by their points, and
+//! one test would change the result of the other (the default sharp angle is 30° for both):
+//! - [`detect_corners`] (the planar profile silhouettes, open): the points are *samples* of a
+//!   smooth outline that may have kinks, their spacing means nothing. A point is a corner
+//!   where the outline's tangents on its two sides disagree: the tangent on each side is
+//!   estimated from the parabola (chord-length parameter) through the point and its two
+//!   neighbours on that side, or from the chord when only one neighbour exists. For densely
+//!   sampled smooth curves the two estimates agree to second order, while at a real kink they
+//!   differ by the kink's angle, so a coarsely sampled circle has no corner.
+//! - [`detect_chord_corners`] (the sweep's profiles and trajectories, in space, open or
+//!   closed): the points are the *vertices* of a polygon the user drew (a square or hexagonal
+//!   section, an L-shaped rail, often 3 to 8 points). A vertex is a corner where the polygon
+//!   turns by more than the sharp angle, whatever its neighbours. The parabola test would
+//!   round such polygons off: its parabolas through three vertices follow the circumscribed
+//!   circle, so a regular hexagon's middle vertices turn by about 22° there instead of 60°
+//!   (see the test `the_two_detectors_answer_different_questions`).
 
 use glam::{DVec2, DVec3};
 
@@ -109,6 +116,31 @@ pub fn detect_chord_corners(points: &[DVec3], closed: bool, sharp_angle: f64) ->
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_two_detectors_answer_different_questions() {
+        // Seven vertices of a regular hexagon (60° turns), as an open polygon.
+        let hexagon: Vec<DVec2> = (0..=6)
+            .map(|k| {
+                let a = std::f64::consts::PI * k as f64 / 3.0;
+                DVec2::new(a.cos(), a.sin())
+            })
+            .collect();
+        let lifted: Vec<DVec3> = hexagon.iter().map(|p| p.extend(0.0)).collect();
+        let sharp = 30f64.to_radians();
+        // Drawn polygon: every interior vertex turns by 60°.
+        assert_eq!(
+            detect_chord_corners(&lifted, false, sharp),
+            vec![1, 2, 3, 4, 5]
+        );
+        let chord = chord_turning_angle(&lifted, false, 3).to_degrees();
+        assert!((chord - 60.0).abs() < 1e-9, "{chord}");
+        // Samples of a smooth outline: the parabolas follow the circle, no kink in the
+        // middle; next to the ends one side has a single neighbour, whose chord is the estimate.
+        assert_eq!(detect_corners(&hexagon, sharp), vec![1, 5]);
+        let smooth = turning_angle(&hexagon, 3).to_degrees();
+        assert!((smooth - 21.79).abs() < 0.01, "{smooth}");
+    }
 
     #[test]
     fn finds_the_kink_of_a_double_cone_and_none_on_a_circle() {

@@ -48,4 +48,13 @@ std::vector<double> bfr_vertex_limits(const Far::TopologyRefiner &refiner, const
     return out;
 }
 
+std::string shape_via_obj(const profsubd_mesh *mesh, const std::string &path, OsdShape *out) {
+    profsubd_status st = profsubd_mesh_write_obj(mesh, path.c_str());
+    if (st != PROFSUBD_OK) {
+        return std::string("profsubd_mesh_write_obj: ") + profsubd_last_error_message();
+    }
+    std::string error;
+    return read_osd_shape(path, out, &error) ? std::string() : "read " + path + ": " + error;
+}
+
 }  // namespace profsubd_test

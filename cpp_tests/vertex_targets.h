@@ -3,7 +3,10 @@
 // *.targets.txt file) and OpenSubdiv's limit position of every control vertex.
 #pragma once
 
+#include "osd_shape.h"
+
 #include <opensubdiv/far/topologyRefiner.h>
+#include <profsubd.h>
 
 #include <string>
 #include <vector>
@@ -19,5 +22,10 @@ bool read_targets(const std::string &path, std::vector<double> *out);
 // vertex's corner. NaN for a vertex without faces or whose face has no limit surface.
 std::vector<double> bfr_vertex_limits(const OpenSubdiv::Far::TopologyRefiner &refiner,
                                       const std::vector<double> &points);
+
+// The mesh as a reader of its OBJ file sees it: written to `path` by profsubd_mesh_write_obj,
+// then parsed by the harness's reader, so `out->options` are the Sdc options its tags record.
+// Returns an empty string on success, otherwise what failed.
+std::string shape_via_obj(const profsubd_mesh *mesh, const std::string &path, OsdShape *out);
 
 }  // namespace profsubd_test

@@ -193,7 +193,8 @@ impl Evaluator {
     ) -> Result<Node> {
         while levels.len() <= depth as usize {
             let refined = refine_uniform(root, &self.options, levels.len() as u32)?;
-            levels.push(Neighbourhood::from_mesh(&refined));
+            let parent = &levels[levels.len() - 1];
+            levels.push(Neighbourhood::refined_from(parent, &refined));
         }
         let nb = levels[depth as usize].around_face(index);
         if let Some(p) = regular_patch(&nb, 0, &self.options) {
@@ -334,9 +335,10 @@ impl Evaluator {
 /// `0..n` of the result (Far's child order).
 fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourhood> {
     let mesh = nb.to_mesh(options)?;
-    Ok(Neighbourhood::from_mesh(&refine_uniform(
-        &mesh, options, 1,
-    )?))
+    Ok(Neighbourhood::refined_from(
+        nb,
+        &refine_uniform(&mesh, options, 1)?,
+    ))
 }
 
 /// The quadrant of `(s, t)` and the coordinates in it. Quadrant `q` is child `q` of a quad

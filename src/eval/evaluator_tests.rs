@@ -330,3 +330,56 @@ fn derivatives_near_extraordinary_vertices_match_finite_differences() {
         }
     }
 }
+
+/// Two triangles sharing an edge in opposite directions (as in OpenSubdiv's
+/// `catmark_val2_nonman`): the edge is non-manifold, hence an infinitely sharp crease, and
+/// each of its refined edge points is a regular crease vertex on either side (Far gives an
+/// edge's child vertex no topological sharpening). The derivative at points exactly on the
+/// crease must be the one-sided derivative of the positions next to it.
+#[test]
+fn derivatives_on_a_non_manifold_crease_are_one_sided_limits() {
+    let mesh = Mesh::from_parts(MeshParts {
+        positions: vec![
+            DVec3::new(0.3, 0.0, -0.7),
+            DVec3::new(0.7, 0.05, -0.7),
+            DVec3::new(0.3, -0.2, -0.9),
+            DVec3::new(0.78, -0.25, -0.93),
+        ],
+        face_sizes: vec![3, 3],
+        face_indices: vec![2, 3, 0, 2, 3, 1],
+        ..Default::default()
+    })
+    .unwrap();
+    let ev = Evaluator::new(&mesh, &SubdivOptions::default()).unwrap();
+    let h = 1e-4;
+    // Sub-face 1 of face 0 (Ptex face 1) has the crease half at vertex 3 as its u = 0 side,
+    // sub-face 0 (Ptex face 0) the half at vertex 2 as its v = 0 side.
+    for &(face, u, v, along_u) in &[
+        (1u32, 0.0, 1.0, true),
+        (1, 0.0, 0.5, true),
+        (0, 0.5, 0.0, false),
+        (0, 0.25, 0.0, false),
+    ] {
+        let at = |s: f64| {
+            let (pu, pv) = if along_u { (u + s, v) } else { (u, v + s) };
+            ev.evaluate(face, pu, pv).unwrap().position
+        };
+        // Second-order one-sided difference into the face.
+        let fd = (-3.0 * at(0.0) + 4.0 * at(h) - at(2.0 * h)) / (2.0 * h);
+        let got = ev.evaluate(face, u, v).unwrap();
+        let d = if along_u { got.du } else { got.dv };
+        assert!(
+            (d - fd).length() < 1e-6 * fd.length(),
+            "face {face} ({u}, {v}): {d} vs finite difference {fd}"
+        );
+        // And continuous: the same a hair inside the face.
+        let (pu, pv) = if along_u {
+            (u + 1e-12, v)
+        } else {
+            (u, v + 1e-12)
+        };
+        let near = ev.evaluate(face, pu, pv).unwrap();
+        let dn = if along_u { near.du } else { near.dv };
+        assert!((d - dn).length() < 1e-9 * d.length(), "{d} vs {dn}");
+    }
+}

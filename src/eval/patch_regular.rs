@@ -17,8 +17,9 @@
 //! conditions are preserved by refinement, which is why the patch is exact. Effective
 //! sharpness follows `Far::TopologyRefinerFactory`: boundary and non-manifold edges are
 //! infinitely sharp, a corner with one face is infinitely sharp under edge-and-corner
-//! interpolation, a non-manifold vertex is infinitely sharp unless it sits on an interior
-//! non-manifold crease.
+//! interpolation, a non-manifold vertex of the base level is infinitely sharp unless it sits
+//! on an interior non-manifold crease (refined vertices that descend from edge points are
+//! never sharpened from topology: [`Neighbourhood::is_edge_descendant`]).
 
 use glam::DVec3;
 
@@ -187,8 +188,9 @@ fn corner_kind_by_counts(
     }
     // Far leaves the vertex of an interior non-manifold crease (two non-manifold edges, no
     // boundary, more faces than edges) alone.
+    // Only base vertices are sharpened from topology.
     let on_nonmanifold_crease = nonmanifold_edges == 2 && boundary_edges == 0 && nfaces > nedges;
-    if !manifold && !on_nonmanifold_crease {
+    if !manifold && !on_nonmanifold_crease && !nb.is_edge_descendant(c) {
         vertex = SHARPNESS_INFINITE;
     }
     if vertex > 0.0 && !is_infinite(vertex) {

@@ -29,6 +29,12 @@ pub struct Neighbourhood {
     edge_tags: HashMap<(u32, u32), f32>,
     /// Corner tags, one per vertex (0 = none).
     vertex_tags: Vec<f32>,
+    /// Vertices that descend from an edge point of a refinement: Far gives an edge's child
+    /// vertex sharpness 0 and sharpens vertices from topology (non-manifold, boundary
+    /// corner) only at the base level, so the patch tests must not sharpen these, although
+    /// a fragment read as a base mesh would (the child of an edge with two faces of opposite
+    /// orientation is a non-manifold vertex with as many faces as edges).
+    edge_descendants: Vec<bool>,
 }
 
 impl Neighbourhood {
@@ -50,7 +56,19 @@ impl Neighbourhood {
             mesh.face_indices().to_vec(),
             edge_tags,
             vertex_tags,
+            vec![false; mesh.num_vertices()],
         )
+    }
+
+    /// `child`, the one-level refinement of `parent` (as a mesh, vertices in Far's default
+    /// order: children of vertices, of faces, then of edges), keeping track of which
+    /// vertices descend from edge points.
+    pub fn refined_from(parent: &Neighbourhood, child: &Mesh) -> Neighbourhood {
+        let mut nb = Neighbourhood::from_mesh(child);
+        let nv = parent.positions.len();
+        nb.edge_descendants[..nv].copy_from_slice(&parent.edge_descendants);
+        nb.edge_descendants[nv + parent.num_faces()..].fill(true);
+        nb
     }
 
     fn assemble(
@@ -59,6 +77,7 @@ impl Neighbourhood {
         face_indices: Vec<u32>,
         edge_tags: HashMap<(u32, u32), f32>,
         vertex_tags: Vec<f32>,
+        edge_descendants: Vec<bool>,
     ) -> Neighbourhood {
         let nv = positions.len();
         let mut vf_offsets = vec![0u32; nv + 1];
@@ -87,6 +106,7 @@ impl Neighbourhood {
             vf_faces,
             edge_tags,
             vertex_tags,
+            edge_descendants,
         }
     }
 
@@ -124,6 +144,12 @@ impl Neighbourhood {
         self.vertex_tags[v as usize]
     }
 
+    /// Whether vertex `v` descends from an edge point of a refinement (see the field).
+    #[inline]
+    pub fn is_edge_descendant(&self, v: u32) -> bool {
+        self.edge_descendants[v as usize]
+    }
+
     /// Position of vertex `v`.
     #[inline]
     pub fn position(&self, v: u32) -> DVec3 {
@@ -153,6 +179,7 @@ impl Neighbourhood {
         let mut globals: Vec<u32> = Vec::with_capacity(faces.len() * 2 + 4);
         let mut positions = Vec::with_capacity(faces.len() * 2 + 4);
         let mut vertex_tags = Vec::with_capacity(faces.len() * 2 + 4);
+        let mut edge_descendants = Vec::with_capacity(faces.len() * 2 + 4);
         let mut face_offsets = Vec::with_capacity(faces.len() + 1);
         let mut face_indices = Vec::with_capacity(faces.len() * 4);
         face_offsets.push(0u32);
@@ -162,6 +189,7 @@ impl Neighbourhood {
                     globals.push(v);
                     positions.push(self.positions[v as usize]);
                     vertex_tags.push(self.vertex_tags[v as usize]);
+                    edge_descendants.push(self.edge_descendants[v as usize]);
                     (positions.len() - 1) as u32
                 });
                 face_indices.push(local);
@@ -187,6 +215,7 @@ impl Neighbourhood {
             face_indices,
             edge_tags,
             vertex_tags,
+            edge_descendants,
         )
     }
 

@@ -4,9 +4,10 @@
 // diagonal of the data points.
 //
 // Models: the checked-in examples (examples/sweeps/*.obj with *.targets.txt: wine glass,
-// torus knot tube, handrail) and models built here through the C API (sphere, cylinder,
-// cone, torus, a square tube along a closed curve, an L-shaped square rail), each read back
-// through the C API and then from the OBJ file it writes, so OpenSubdiv is configured from the
+// torus knot tube, handrail, capped 270-degree cutaways of a wine glass and a vase) and
+// models built here through the C API (sphere, cylinder, cone, partial and capped
+// revolutions, torus, a square tube along a closed curve, an L-shaped square rail), each read
+// back through the C API and then from the OBJ file it writes, so OpenSubdiv is configured from the
 // file's option tags. Models under other subdivision options and semi-sharp creases
 // (crease_sharpness): a three-quarter revolution and an open ribbon, whose one-face corner
 // vertices make boundary edge-only and edge-and-corner differ (Bfr under the other rule must
@@ -158,7 +159,8 @@ std::vector<double> circle(int n, double r, int dims) {
 int main() {
     Checker ck("conformance_sweep");
     std::vector<Model> models;
-    for (const char *name : {"wine_glass", "torus_knot_tube", "handrail"}) {
+    for (const char *name :
+         {"wine_glass", "torus_knot_tube", "handrail", "wine_glass_cutaway", "vase_cutaway"}) {
         Model m;
         m.name = name;
         std::string base = std::string(PROFSUBD_SWEEP_EXAMPLES) + "/" + name;
@@ -193,6 +195,33 @@ int main() {
             models.push_back(std::move(m));
         }
     }
+    // Partial revolutions: poles on the boundary meridians (sectors with a corner apex), and
+    // flat caps (sectors, meridian planes) closing the solid.
+    struct Wedge {
+        const char *name;
+        const std::vector<double> *profile;
+        double angle;
+        int caps;
+        uint32_t samples_around;
+    } wedges[] = {
+        {"open sphere wedge 90 deg", &semicircle, 90, PROFSUBD_CAPS_OPEN, 8},
+        {"capped sphere wedge 270 deg", &semicircle, 270, PROFSUBD_CAPS_FLAT, 24},
+        {"capped half cone", &cone, 180, PROFSUBD_CAPS_FLAT, 16},
+        {"capped cylinder (full turn, flat discs)", &cylinder, 360, PROFSUBD_CAPS_FLAT, 32},
+    };
+    for (const Wedge &w : wedges) {
+        profsubd_options_set_sweep_samples(raw_options, 16, w.samples_around);
+        profsubd_options_set_revolve_angle(raw_options, w.angle);
+        profsubd_options_set_caps(raw_options, w.caps);
+        profsubd_swept *s = nullptr;
+        profsubd_status st = profsubd_revolve(w.profile->data(), w.profile->size() / 2, raw_options, &s);
+        Model m;
+        if (take_result(ck, w.name, st, s, &m)) {
+            models.push_back(std::move(m));
+        }
+    }
+    profsubd_options_set_caps(raw_options, PROFSUBD_CAPS_OPEN);
+    profsubd_options_set_revolve_angle(raw_options, 360.0);
     // Sweeps: a torus (circle along a circle), a square tube along a closed wavy curve (four
     // crease loops), an L-shaped square rail (a crease ring at the corner).
     const std::vector<double> small = circle(32, 0.5, 2), square = {-0.2, -0.2, 0.2, -0.2, 0.2, 0.2, -0.2, 0.2};
@@ -286,6 +315,6 @@ int main() {
         check_model(ck, m);
     }
     ck.set_context("");
-    ck.equal(models.size(), size_t(14), "every model built");
+    ck.equal(models.size(), size_t(20), "every model built");
     return ck.finish();
 }

@@ -970,11 +970,14 @@ const char *profsubd_status_string(int32_t status);
  * be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
  * 16, 32), `profsubd_options_set_revolve_angle` (default 360),
  * `profsubd_options_set_sweep_corners` (its profile list), the profile construction's
- * interpolation, sharp angle and crease sharpness, and the boundary interpolation and crease
- * method the model is fitted under and tagged with (default edge-and-corner, uniform). Ends
- * on the axis become smooth poles (quad caps) or tips (corner-tagged). Errors:
- * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings (also boundary
- * interpolation none with an open boundary; the message says which),
+ * interpolation, sharp angle, crease sharpness and caps (`profsubd_options_set_caps`:
+ * `PROFSUBD_CAPS_FLAT` closes the solid with flat caps, creased infinitely sharp where they
+ * meet: discs or sectors at ends off the axis, and on a partial turn the start and end
+ * meridian planes), and the boundary interpolation and crease method the model is fitted
+ * under and tagged with (default edge-and-corner, uniform). Ends on the axis become smooth
+ * poles (quad caps) or tips (corner-tagged); on a partial turn, sectors of quads with a
+ * corner-tagged apex. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or
+ * settings (also boundary interpolation none with an open boundary; the message says which),
  * `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
  */
 enum profsubd_status profsubd_revolve(const double *profile,

@@ -5,6 +5,9 @@
 
 #[path = "support/mesh_compare.rs"]
 mod mesh_compare;
+#[allow(dead_code)]
+#[path = "support/swept.rs"]
+mod swept;
 
 use std::path::PathBuf;
 
@@ -14,6 +17,7 @@ use profsubd::construct::sweep::sweep::SweepInput;
 use profsubd::construct::sweep::{revolve, sweep, SweptSurface};
 use profsubd::io::obj::read_obj_file;
 use profsubd::mesh::validate::check;
+use swept::crease_degrees;
 
 fn example(name: &str, ext: &str) -> PathBuf {
     example_file("sweeps", name, ext)
@@ -22,29 +26,22 @@ fn example(name: &str, ext: &str) -> PathBuf {
 fn build(name: &str) -> SweptSurface {
     let path = example(name, "json");
     let text = std::fs::read_to_string(&path).unwrap();
-    if name == "wine_glass" {
+    if name.starts_with("wine_glass") || name == "vase_cutaway" {
         revolve(&RevolveInput::from_json(&text, &path).unwrap()).unwrap()
     } else {
         sweep(&SweepInput::from_json(&text, &path).unwrap()).unwrap()
     }
 }
 
-/// Vertices with `k` crease edges, for k = 1, 2, 3...
-fn crease_degrees(s: &SweptSurface) -> Vec<usize> {
-    let mut degree = vec![0usize; s.mesh.num_vertices()];
-    for c in s.mesh.creases() {
-        for v in c.vertices {
-            degree[v as usize] += 1;
-        }
-    }
-    (1..=4)
-        .map(|k| degree.iter().filter(|&&d| d == k).count())
-        .collect()
-}
-
 #[test]
 fn examples_regenerate_with_their_topology() {
-    for name in ["wine_glass", "torus_knot_tube", "handrail"] {
+    for name in [
+        "wine_glass",
+        "torus_knot_tube",
+        "handrail",
+        "wine_glass_cutaway",
+        "vase_cutaway",
+    ] {
         let s = build(name);
         let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
         assert_same(&s.mesh, &stored, name);
@@ -78,6 +75,22 @@ fn examples_regenerate_with_their_topology() {
                 assert_eq!(r.num_boundary_loops, 2);
                 assert_eq!(s.mesh.creases().len(), 4 * 48 + 2 * 8);
                 assert_eq!(crease_degrees(&s)[3], 8);
+            }
+            // 270° cutaways closed by flat caps (sectors at ends off the axis, both meridian
+            // planes); the glass's ends are smooth poles on the meridians. Creases meet three
+            // at a time at corner-tagged vertices only (no crease ends, no darts): the
+            // apexes, the meridian ends of the crease rings and of the flat ends' arcs.
+            "wine_glass_cutaway" | "vase_cutaway" => {
+                assert!(r.is_closed());
+                assert_eq!(r.euler_characteristic, 2);
+                assert!(r.valences.keys().all(|v| (3..=5).contains(v)), "{name}");
+                let degrees = crease_degrees(&s);
+                assert_eq!((degrees[0], degrees[3]), (0, 0), "{name}");
+                assert_eq!(s.mesh.corners().len(), degrees[2], "{name}");
+                // Glass: 6 crease rings (foot edge, foot top, stem ×2, bowl, rim) and 2 poles;
+                // vase: 2 flat ends (apex and 2 arc ends each), 3 crease rings.
+                let expect = if name == "vase_cutaway" { 12 } else { 14 };
+                assert_eq!(s.mesh.corners().len(), expect, "{name}");
             }
             _ => unreachable!(),
         }
@@ -122,6 +135,21 @@ fn cli_writes_the_mesh_and_targets_and_nothing_on_error() {
             "revolve",
             r#"{"profile": [[1, 0], [-1, 1]]}"#,
             "crosses the axis",
+        ),
+        (
+            "revolve",
+            r#"{"profile": [[0, -1], [1, 0], [0, 1]], "caps": "flat"}"#,
+            "nothing to cap",
+        ),
+        (
+            "revolve",
+            r#"{"profile": [[1, 0], [1, 1]], "angle_deg": 90, "caps": "round"}"#,
+            "unknown variant `round`",
+        ),
+        (
+            "revolve",
+            r#"{"profile": [[1, 0], [1, 1]], "angle_deg": 0}"#,
+            "(0, 360]",
         ),
         (
             "sweep",

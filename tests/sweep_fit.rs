@@ -1,13 +1,17 @@
 //! Fitted sweeps and revolutions: the exact limit at every control vertex equals its data
 //! point, and the meshes have the topology the construction promises.
 
+#[allow(dead_code)]
+#[path = "support/swept.rs"]
+mod swept;
+
 use std::f64::consts::{PI, TAU};
 
 use profsubd::construct::sweep::revolve::RevolveInput;
 use profsubd::construct::sweep::sweep::SweepInput;
-use profsubd::construct::sweep::{revolve, sweep, SweptSurface};
-use profsubd::eval::limit_stencils;
+use profsubd::construct::sweep::{revolve, sweep};
 use profsubd::mesh::validate::check;
+use swept::relative_residual;
 
 fn circle(n: usize, r: f64) -> Vec<[f64; 2]> {
     (0..n)
@@ -16,18 +20,6 @@ fn circle(n: usize, r: f64) -> Vec<[f64; 2]> {
             [r * t.cos(), r * t.sin()]
         })
         .collect()
-}
-
-/// Largest distance between a vertex's exact limit position and its target, over the diagonal.
-fn relative_residual(s: &SweptSurface) -> f64 {
-    let table = limit_stencils(&s.mesh, &s.mesh.options().resolve()).unwrap();
-    let limits = table.apply(s.mesh.positions()).unwrap();
-    let worst = limits
-        .iter()
-        .zip(&s.targets)
-        .map(|(a, b)| a.distance(*b))
-        .fold(0.0, f64::max);
-    worst / s.mesh.bounding_box_diagonal()
 }
 
 #[test]

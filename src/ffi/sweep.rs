@@ -89,11 +89,14 @@ unsafe fn settings(options: *const profsubd_options) -> FfiResult<Option<&'stati
 /// be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
 /// 16, 32), `profsubd_options_set_revolve_angle` (default 360),
 /// `profsubd_options_set_sweep_corners` (its profile list), the profile construction's
-/// interpolation, sharp angle and crease sharpness, and the boundary interpolation and crease
-/// method the model is fitted under and tagged with (default edge-and-corner, uniform). Ends
-/// on the axis become smooth poles (quad caps) or tips (corner-tagged). Errors:
-/// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or settings (also boundary
-/// interpolation none with an open boundary; the message says which),
+/// interpolation, sharp angle, crease sharpness and caps (`profsubd_options_set_caps`:
+/// `PROFSUBD_CAPS_FLAT` closes the solid with flat caps, creased infinitely sharp where they
+/// meet: discs or sectors at ends off the axis, and on a partial turn the start and end
+/// meridian planes), and the boundary interpolation and crease method the model is fitted
+/// under and tagged with (default edge-and-corner, uniform). Ends on the axis become smooth
+/// poles (quad caps) or tips (corner-tagged); on a partial turn, sectors of quads with a
+/// corner-tagged apex. Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a bad profile or
+/// settings (also boundary interpolation none with an open boundary; the message says which),
 /// `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_revolve(
@@ -109,6 +112,7 @@ pub unsafe extern "C" fn profsubd_revolve(
             let (p, s) = (&o.profile, &o.sweep);
             input.interpolation = p.interpolation.unwrap_or(input.interpolation);
             input.sharp_angle_deg = p.sharp_angle_deg.unwrap_or(input.sharp_angle_deg);
+            input.caps = p.caps.unwrap_or(input.caps);
             if let Some([a, b]) = s.samples {
                 (input.samples_profile, input.samples_around) = (a as usize, b as usize);
             }

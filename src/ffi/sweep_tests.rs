@@ -4,7 +4,9 @@ use super::*;
 use crate::ffi::error::last_error;
 use crate::ffi::mesh::{mesh_arg, profsubd_mesh_free};
 use crate::ffi::options::{profsubd_options_free, profsubd_options_new};
-use crate::ffi::profile::profsubd_options_set_interpolation;
+use crate::ffi::profile::{
+    profsubd_caps, profsubd_options_set_caps, profsubd_options_set_interpolation,
+};
 use crate::ffi::status::profsubd_status::*;
 
 fn options() -> *mut profsubd_options {
@@ -104,6 +106,53 @@ fn revolve_and_sweep_build_what_the_rust_api_builds() {
         assert_eq!(expect.creases().len(), 16 + 8);
         assert_eq!(mesh_of(s), expect);
         profsubd_swept_free(s);
+        profsubd_options_free(o);
+    }
+}
+
+#[test]
+fn capped_partial_revolution_through_the_c_api() {
+    let o = options();
+    unsafe {
+        let vase = [1.0, 0.0, 1.4, 0.8, 1.3, 2.0, 0.9, 3.0, 0.9, 3.6];
+        assert_eq!(profsubd_options_set_sweep_samples(o, 8, 16), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_revolve_angle(o, 270.0), PROFSUBD_OK);
+        let flat = profsubd_caps::PROFSUBD_CAPS_FLAT as i32;
+        assert_eq!(profsubd_options_set_caps(o, flat), PROFSUBD_OK);
+        let mut s = null_mut();
+        assert_eq!(profsubd_revolve(vase.as_ptr(), 5, o, &mut s), PROFSUBD_OK);
+        let mut input = RevolveInput::new(vase.chunks(2).map(|c| [c[0], c[1]]).collect());
+        (input.samples_profile, input.samples_around) = (8, 16);
+        input.angle_deg = 270.0;
+        input.caps = crate::construct::profile::Caps::Flat;
+        let expect = revolve(&input).unwrap().mesh;
+        let report = crate::mesh::validate::check(&expect);
+        assert!(report.is_closed() && report.euler_characteristic == 2);
+        assert_eq!(mesh_of(s), expect);
+        profsubd_swept_free(s);
+        // Caps on a full turn of a profile with both ends on the axis: nothing to close.
+        let sphere = [0.0, -1.0, 1.0, 0.0, 0.0, 1.0];
+        assert_eq!(profsubd_options_set_revolve_angle(o, 360.0), PROFSUBD_OK);
+        let mut s = null_mut();
+        assert_eq!(
+            profsubd_revolve(sphere.as_ptr(), 3, o, &mut s),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("nothing to cap"), "{}", last_error());
+        assert!(s.is_null());
+        // Partial turn with caps and samples around not a multiple of 4.
+        assert_eq!(profsubd_options_set_revolve_angle(o, 90.0), PROFSUBD_OK);
+        assert_eq!(profsubd_options_set_sweep_samples(o, 8, 10), PROFSUBD_OK);
+        assert_eq!(
+            profsubd_revolve(vase.as_ptr(), 5, o, &mut s),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("multiple of 4"), "{}", last_error());
+        assert!(s.is_null());
+        assert_eq!(
+            profsubd_options_set_caps(o, 2),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
         profsubd_options_free(o);
     }
 }

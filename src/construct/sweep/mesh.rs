@@ -14,8 +14,9 @@ use crate::mesh::{MeshParts, SHARPNESS_INFINITE};
 use crate::options::PartialOptions;
 
 /// Quad mesh parts of `grid`; crease edges get `grid.crease_sharpness`, tips are infinitely
-/// sharp corners. `cap_point(end, v)` gives
-/// the data point of grid-cap vertex `v` at a smooth pole (`end` 0: first ring, 1: last).
+/// sharp corners, flat caps are creased infinitely sharp. `cap_point(end, v)` gives the data
+/// point of grid-cap vertex `v` at a smooth pole or flat end (`end` 0: first ring, 1: last).
+/// Vertex ids: ring `i`'s vertex `j` is `i × ring length + j`, cap vertices follow.
 ///
 /// Orientation: quads `(ring i, j) → (ring i, j+1) → (ring i+1, j+1) → (ring i+1, j)`, reversed
 /// when `grid.flip`; caps follow (the first ring's cap faces backwards).
@@ -58,6 +59,10 @@ pub fn grid_mesh(
                 b.tip(ring, p, SHARPNESS_INFINITE, flip)?;
             }
             GridEnd::Smooth => b.grid_cap(ring, flip, |v| cap_point(end, v))?,
+            GridEnd::Flat => {
+                b.grid_cap(ring, flip, |v| cap_point(end, v))?;
+                b.crease_ring(ring, 0..ring_spans, SHARPNESS_INFINITE);
+            }
         }
     }
     for &i in &grid.crease_rings {

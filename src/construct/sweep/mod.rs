@@ -5,6 +5,7 @@
 //! - [`trajectory`]: the validated trajectory, its samples and their frames;
 //! - [`sweep`](mod@sweep): the sweep input (JSON) and its grid of data points;
 //! - [`revolve`](mod@revolve): surfaces of revolution (JSON input, poles, grid of data points);
+//! - [`wedge`]: partial revolutions: sector caps at poles and flat ends, flat meridian caps;
 //! - [`mesh`]: quad mesh parts of a grid (shared caps and crease tagging);
 //! - [`build`]: the fitted constructions [`revolve`](build::revolve) and [`sweep`](build::sweep).
 
@@ -16,5 +17,6 @@ pub mod revolve;
 #[allow(clippy::module_inception)]
 pub mod sweep;
 pub mod trajectory;
+pub mod wedge;
 
 pub use build::{revolve, sweep, SweptSurface};

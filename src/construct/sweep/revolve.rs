@@ -3,7 +3,8 @@
 //! ```json
 //! { "profile": [[r,z],...], "angle_deg": 360, "samples_profile": 16, "samples_around": 32,
 //!   "interpolation": "spline", "sharp_angle_deg": 30, "corners": [3],
-//!   "crease_sharpness": "infinite", "boundary": "edge-and-corner", "crease_method": "uniform" }
+//!   "crease_sharpness": "infinite", "boundary": "edge-and-corner", "crease_method": "uniform",
+//!   "caps": "open" }
 //! ```
 //! Only `profile` is required (points from bottom to top, `r ≥ 0`); an unknown key is an
 //! error. Defaults: `angle_deg` = 360 (a full turn, closed; less than 360 leaves boundary
@@ -13,7 +14,11 @@
 //! `crease_sharpness` = `"infinite"` (or a number ≥ 0, as in the profile construction; tips
 //! stay infinitely sharp corners), `boundary` = `"edge-and-corner"` (`"edge-only"`, `"none"`)
 //! and `crease_method` = `"uniform"` (`"chaikin"`): the options the mesh is fitted under and
-//! tagged with ([`crate::fit::cage`]).
+//! tagged with ([`crate::fit::cage`]); `caps` = `"open"`. With `"caps": "flat"` the solid is closed by flat caps, creased where
+//! they meet the side or each other: ends off the axis get a flat disc (full turn) or sector
+//! (partial turn), and a partial turn's start and end meridian planes get flat caps between
+//! the profile and the axis (layouts: [`super::wedge`]). Caps on a full turn whose ends are
+//! both on the axis are refused (nothing to close).
 //!
 //! *Poles*: a profile end on the axis (`r = 0`) closes the surface there. The profile is
 //! extended by its mirror image across the axis before it is interpolated, so the spline is
@@ -22,8 +27,11 @@
 //! the axis at more than half that angle from the perpendicular, is a *pointed pole* (a tip
 //! vertex tagged as an infinitely sharp corner, like a cone's apex); otherwise it is a *smooth
 //! pole*, closed by a grid cap of quads (valence 3 and 4 only, see
-//! [`crate::construct::pole_cap`]). Poles need a full turn, `samples_around` a multiple of 4
-//! for a smooth pole and even for a tip. Profile corners give crease rings.
+//! [`crate::construct::pole_cap`]). On a full turn `samples_around` must be a multiple of 4
+//! for a smooth pole or a flat cap and even for a tip. On a partial turn a pole lies on both
+//! boundary meridians; it is closed by a sector of quads whose apex is tagged as an
+//! infinitely sharp corner ([`super::wedge`]; `samples_around` a multiple of 4). Profile
+//! corners give crease rings.
 
 use std::f64::consts::TAU;
 use std::path::Path;
@@ -34,11 +42,13 @@ use serde::Deserialize;
 use super::mesh::grid_mesh;
 use super::profile::check_no_crossing;
 use super::sweep::{sample_counts_ok, GridEnd, SweepGrid};
+use super::wedge::wedge_parts;
 use crate::construct::pole_cap::CapVertex;
 use crate::construct::profile::input::{
     check_crease_sharpness, default_crease_sharpness, deserialize_sharpness,
 };
 use crate::construct::profile::input::{MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
+use crate::construct::profile::Caps;
 use crate::curves::corners::detect_chord_corners;
 use crate::curves::{Interpolation, SpaceCurve};
 use crate::error::{Error, Result};
@@ -85,6 +95,9 @@ pub struct RevolveInput {
     /// Crease method of the fit and the mesh's tag. Default uniform.
     #[serde(default)]
     pub crease_method: CreaseMethod,
+    /// `"flat"`: close the solid with flat caps (see [`super::wedge`]). Default `"open"`.
+    #[serde(default)]
+    pub caps: Caps,
 }
 
 fn default_angle() -> f64 {
@@ -236,6 +249,7 @@ impl RevolveInput {
             crease_sharpness: default_crease_sharpness(),
             boundary: BoundaryInterpolation::default(),
             crease_method: CreaseMethod::default(),
+            caps: Caps::Open,
         }
     }
 
@@ -308,34 +322,55 @@ impl RevolveInput {
     pub fn mesh_parts(&self) -> Result<MeshParts> {
         let profile = self.profile_curve()?;
         let (grid, ring_s) = self.rings(&profile)?;
+        if !self.full_turn() {
+            return wedge_parts(self, &profile, &grid, &ring_s);
+        }
         let [s0, s1] = profile.range();
         let ring = [ring_s[0], ring_s[ring_s.len() - 1]];
         let place = |end: usize, v: CapVertex| {
+            if grid.ends[end] == GridEnd::Flat {
+                let p = profile.point(ring[end]);
+                return revolve_point(DVec2::new(v.radius * p.x, p.y), TAU * v.turn);
+            }
             let pole = [s0, s1][end];
             cap_point(&profile, ring[end], pole, v.radius, v.turn)
         };
         grid_mesh(&grid, &place)
     }
 
-    /// The grid and the profile parameter of each ring.
-    fn rings(&self, profile: &RevolvedProfile) -> Result<(SweepGrid, Vec<f64>)> {
-        let ends = [profile.end(0), profile.end(1)];
+    /// Check the end kinds against the angle, the caps and `samples_around`.
+    fn check_ends(&self, ends: &[GridEnd; 2]) -> Result<()> {
         let na = self.samples_around;
+        let capped = self.caps == Caps::Flat;
+        if capped && self.full_turn() && !ends.contains(&GridEnd::Open) {
+            return Err(Error::invalid_argument(
+                "caps = \"flat\" on a full turn of a profile with both ends on the axis: the \
+                 surface is already closed, there is nothing to cap",
+            ));
+        }
+        if !self.full_turn() {
+            let sectors = capped || ends.iter().any(|e| *e != GridEnd::Open);
+            if sectors && na % 4 != 0 {
+                return Err(Error::invalid_argument(format!(
+                    "samples_around = {na}: a partial revolution with caps or with an end on \
+                     the axis closes its ends with sector caps, which need a multiple of 4"
+                )));
+            }
+            return Ok(());
+        }
         for (which, e) in ends.iter().enumerate() {
             let name = ["bottom", "top"][which];
             match e {
-                GridEnd::Open => {}
-                _ if !self.full_turn() => {
-                    return Err(Error::invalid_argument(format!(
-                        "the profile's {name} end is on the axis, which needs a full turn \
-                         (angle_deg = 360), got {}",
-                        self.angle_deg
-                    )))
-                }
                 GridEnd::Smooth if na % 4 != 0 => {
                     return Err(Error::invalid_argument(format!(
                         "samples_around = {na}: a smooth pole (the {name} end) is closed by a grid \
                          cap, which needs a multiple of 4"
+                    )))
+                }
+                GridEnd::Open if capped && na % 4 != 0 => {
+                    return Err(Error::invalid_argument(format!(
+                        "samples_around = {na}: the flat cap of the {name} end is a grid cap, \
+                         which needs a multiple of 4"
                     )))
                 }
                 GridEnd::Tip(_) if na % 2 != 0 => {
@@ -346,6 +381,14 @@ impl RevolveInput {
                 _ => {}
             }
         }
+        Ok(())
+    }
+
+    /// The grid and the profile parameter of each ring.
+    fn rings(&self, profile: &RevolvedProfile) -> Result<(SweepGrid, Vec<f64>)> {
+        let mut ends = [profile.end(0), profile.end(1)];
+        self.check_ends(&ends)?;
+        let na = self.samples_around;
         let [s0, s1] = profile.range();
         let mut samples = profile
             .curve
@@ -368,6 +411,19 @@ impl RevolveInput {
         } else {
             (na + 1, false)
         };
+        if let Some(c) = samples.iter().find(|c| profile.point(c.s).x < 0.0) {
+            return Err(Error::invalid_argument(format!(
+                "the spline through the profile crosses the axis (r = {} at z = {}); add \
+                 points there or use \"interpolation\": \"polyline\"",
+                profile.point(c.s).x,
+                profile.point(c.s).y
+            )));
+        }
+        if self.caps == Caps::Flat {
+            for e in ends.iter_mut().filter(|e| **e == GridEnd::Open) {
+                *e = GridEnd::Flat;
+            }
+        }
         let step = self.angle_deg.to_radians() / na as f64;
         let rings = samples
             .iter()
@@ -519,7 +575,8 @@ mod tests {
         assert!(msg(&|i| i.profile[3][0] = -0.1).contains("crosses the axis"));
         assert!(msg(&|i| i.profile[3][0] = 0.0).contains("on the axis; only"));
         assert!(msg(&|i| i.samples_around = 30).contains("multiple of 4"));
-        assert!(msg(&|i| i.angle_deg = 180.0).contains("full turn"));
+        assert!(msg(&|i| (i.angle_deg, i.samples_around) = (180.0, 30)).contains("sector caps"));
+        assert!(msg(&|i| i.caps = Caps::Flat).contains("nothing to cap"));
         assert!(msg(&|i| i.angle_deg = 0.0).contains("(0, 360]"));
         assert!(msg(&|i| i.profile = vec![[1.0, 0.0]]).contains("at least 2"));
         assert!(msg(&|i| i.profile = vec![[1.0, 0.0], [1.0, f64::NAN]]).contains("not finite"));

@@ -145,6 +145,8 @@ pub enum GridEnd {
     Tip(DVec3),
     /// Closed by a grid cap through a smooth pole.
     Smooth,
+    /// Closed by a flat grid cap, creased where it meets the side.
+    Flat,
 }
 
 /// The data points of a sweep on a grid, with what the mesh needs to know about it.

@@ -1,0 +1,476 @@
+//! Partial revolutions (wedges): poles on the boundary meridians, sector caps, flat meridian
+//! caps.
+//!
+//! A revolution by `angle_deg < 360` has rings of `n + 1` vertices (`n` = `samples_around`)
+//! from the start meridian (θ = 0) to the end meridian (θ = angle).
+//!
+//! *Sector layout* (`n = 4k`). The region between an end ring and the axis — a pole's
+//! neighbourhood on the surface, or a flat cap's circular sector — is closed by two `k × k`
+//! grid patches meeting along the sector's bisector. The first has its corners at the apex
+//! (on the axis), the ring's first vertex, its quarter point and its middle; the second
+//! mirrors it. So the apex has valence 3 (4 with meridian caps), the quarter points
+//! valence 3, the other vertices 4: no vertex of valence ≈ `n`, and as each half spans at
+//! most 180° no quad has a reflex angle. Interior vertices come from transfinite (Coons)
+//! interpolation in the unit sector, as a relative radius ρ and an angle θ; a flat cap
+//! scales ρ by the ring's radius in the ring's plane, a pole maps `(ρ, θ)` onto the surface
+//! through [`cap_point`] (the same placement as a full turn's pole cap). A pole's apex is an
+//! infinitely sharp corner: the two boundary meridians meet there at the wedge angle, and
+//! with caps three creases meet there.
+//!
+//! *Meridian caps* (`"caps": "flat"`; both ends then have a sector). Each meridian plane is
+//! closed by a structured grid of `(R − 1) × k` quads (`R` rings) with sides: the bottom
+//! sector's radial line (`k` intervals, apex to ring), the ring column (`R − 1`), the top
+//! sector's radial line (`k`) and the axis (`R − 1` intervals, vertices shared by both caps).
+//! The axis vertices sit at the heights of the ring column when those rise strictly (rows
+//! are then horizontal); otherwise at a blend of the column's running-maximum height and a
+//! small share (2%, or if that folds 10%, 30%, 100%) of its chord-length fraction, which
+//! keeps them strictly rising and the rows nearly horizontal (a flat foot or a flat top, say).
+//! Interior vertices come from Coons interpolation in the `(r, z)` plane. A layout that
+//! would fold (a profile that does not face the axis, like a hollow glass) is refused.
+//!
+//! Every edge where a flat cap meets the side or another cap is an infinitely sharp crease,
+//! and every vertex where three or more creases meet an infinitely sharp corner. A cap's
+//! data points lie in its plane; behind its creases its limit surface depends only on its own
+//! control points, and their fit is planar too, so the caps are flat in the limit.
+
+use std::collections::HashSet;
+use std::f64::consts::TAU;
+
+use glam::{DVec2, DVec3};
+
+use super::mesh::grid_mesh;
+use super::revolve::{cap_point, revolve_point, RevolveInput, RevolvedProfile};
+use super::sweep::{GridEnd, SweepGrid};
+use crate::construct::profile::Caps;
+use crate::error::{Error, Result};
+use crate::mesh::{Corner, Crease, MeshParts, SHARPNESS_INFINITE};
+
+/// Shares of the chord-length fraction tried, in turn, in the axis spacing of a meridian cap
+/// whose ring column does not rise strictly (the rest follows its heights).
+const CHORD_SHARES: [f64; 4] = [0.02, 0.1, 0.3, 1.0];
+
+/// A sector closing one end ring: its apex and its two radial lines.
+struct Sector {
+    apex: u32,
+    /// Vertex ids from the apex to the ring, along θ = 0 and along θ = angle.
+    radials: [Vec<u32>; 2],
+}
+
+/// The wedge under construction: the side's parts plus caps.
+struct Wedge {
+    parts: MeshParts,
+    /// Directed edges of the faces so far (to orient new patches).
+    directed: HashSet<(u32, u32)>,
+    /// Crease edges so far, as (min, max).
+    creased: HashSet<(u32, u32)>,
+}
+
+/// Quads of the structured grid `ids[i][j]`.
+fn grid_quads(ids: &[Vec<u32>]) -> Vec<[u32; 4]> {
+    let mut quads = Vec::new();
+    for i in 0..ids.len() - 1 {
+        for j in 0..ids[i].len() - 1 {
+            quads.push([ids[i][j], ids[i][j + 1], ids[i + 1][j + 1], ids[i + 1][j]]);
+        }
+    }
+    quads
+}
+
+/// Transfinite (Coons) interpolation of a grid `x[i][j]` (`i` in `0..=a`, `j` in `0..=b`)
+/// from its sides `x[i][0] = left[i]`, `x[i][b] = right[i]`, `x[0][j] = bottom[j]`,
+/// `x[a][j] = top[j]`, at side parameters `u[i]` and `v[j]` (0 to 1).
+fn coons(
+    left: &[DVec2],
+    right: &[DVec2],
+    bottom: &[DVec2],
+    top: &[DVec2],
+    u: &[f64],
+    v: &[f64],
+) -> Vec<Vec<DVec2>> {
+    let (a, b) = (left.len() - 1, bottom.len() - 1);
+    (0..=a)
+        .map(|i| {
+            (0..=b)
+                .map(|j| {
+                    let (u, v) = (u[i], v[j]);
+                    (1.0 - v) * left[i] + v * right[i] + (1.0 - u) * bottom[j] + u * top[j]
+                        - ((1.0 - u) * (1.0 - v) * left[0]
+                            + (1.0 - u) * v * right[0]
+                            + u * (1.0 - v) * left[a]
+                            + u * v * right[a])
+                })
+                .collect()
+        })
+        .collect()
+}
+
+fn uniform(count: usize) -> Vec<f64> {
+    (0..=count).map(|i| i as f64 / count as f64).collect()
+}
+
+impl Wedge {
+    fn new(parts: MeshParts) -> Wedge {
+        let mut directed = HashSet::new();
+        for f in parts.face_indices.chunks_exact(4) {
+            for i in 0..4 {
+                directed.insert((f[i], f[(i + 1) % 4]));
+            }
+        }
+        let creased = parts
+            .creases
+            .iter()
+            .map(|c| {
+                (
+                    c.vertices[0].min(c.vertices[1]),
+                    c.vertices[0].max(c.vertices[1]),
+                )
+            })
+            .collect();
+        Wedge {
+            parts,
+            directed,
+            creased,
+        }
+    }
+
+    fn add_vertex(&mut self, p: DVec3) -> u32 {
+        self.parts.positions.push(p);
+        self.parts.positions.len() as u32 - 1
+    }
+
+    /// Add a patch's quads, reversed if they run along an existing edge the same way
+    /// (consistent orientation); `creased`: its boundary edges become crease edges.
+    fn add_patch(&mut self, mut quads: Vec<[u32; 4]>, creased: bool) {
+        fn edges(f: &[u32; 4]) -> impl Iterator<Item = (u32, u32)> + '_ {
+            (0..4).map(move |i| (f[i], f[(i + 1) % 4]))
+        }
+        if quads
+            .iter()
+            .any(|f| edges(f).any(|e| self.directed.contains(&e)))
+        {
+            for f in &mut quads {
+                f.swap(1, 3);
+            }
+        }
+        let own: HashSet<(u32, u32)> = quads.iter().flat_map(edges).collect();
+        for f in &quads {
+            for (a, b) in edges(f) {
+                self.directed.insert((a, b));
+                if creased && !own.contains(&(b, a)) && self.creased.insert((a.min(b), a.max(b))) {
+                    self.parts.creases.push(Crease {
+                        vertices: [a, b],
+                        sharpness: SHARPNESS_INFINITE,
+                    });
+                }
+            }
+            self.parts.face_sizes.push(4);
+            self.parts.face_indices.extend_from_slice(f);
+        }
+    }
+
+    /// Close `ring` (`4k + 1` ids from θ = 0 to θ = `angle`) with the two-patch sector
+    /// layout; `place(ρ, θ)` gives the data point at relative radius ρ and angle θ.
+    fn sector(
+        &mut self,
+        ring: &[u32],
+        angle: f64,
+        place: &dyn Fn(f64, f64) -> DVec3,
+        creased: bool,
+    ) -> Sector {
+        let k = (ring.len() - 1) / 4;
+        let apex = self.add_vertex(place(0.0, 0.0));
+        // A radial line at θ from the apex to ring vertex `end`.
+        let radial = |w: &mut Wedge, theta: f64, end: u32| -> Vec<u32> {
+            let mut ids = vec![apex];
+            ids.extend((1..k).map(|j| w.add_vertex(place(j as f64 / k as f64, theta))));
+            ids.push(end);
+            ids
+        };
+        let first = radial(self, 0.0, ring[0]);
+        let mid = radial(self, angle / 2.0, ring[2 * k]);
+        let last = radial(self, angle, ring[4 * k]);
+        // Half 0 spans θ in [0, angle/2], half 1 mirrors it (θ → angle − θ, ring p → 4k − p).
+        let half = angle / 2.0;
+        let unit = |rho: f64, theta: f64| DVec2::new(rho * theta.cos(), rho * theta.sin());
+        let t = uniform(k);
+        let left: Vec<DVec2> = t.iter().map(|&r| unit(r, half)).collect();
+        let bottom: Vec<DVec2> = t.iter().map(|&r| unit(r, 0.0)).collect();
+        let right: Vec<DVec2> = t.iter().map(|&f| unit(1.0, f * half / 2.0)).collect();
+        let top: Vec<DVec2> = t
+            .iter()
+            .map(|&f| unit(1.0, half - f * half / 2.0))
+            .collect();
+        let inner = coons(&left, &right, &bottom, &top, &t, &t);
+        let mut quads = Vec::new();
+        for (h, radial) in [(0, &first), (1, &last)] {
+            let ring_at = |p: usize| ring[if h == 0 { p } else { 4 * k - p }];
+            let mut ids = vec![vec![0u32; k + 1]; k + 1];
+            for i in 0..=k {
+                for j in 0..=k {
+                    ids[i][j] = if i == 0 {
+                        radial[j]
+                    } else if j == 0 {
+                        mid[i]
+                    } else if j == k {
+                        ring_at(i)
+                    } else if i == k {
+                        ring_at(2 * k - j)
+                    } else {
+                        let q = inner[i][j];
+                        let theta = q.y.atan2(q.x);
+                        let theta = if h == 0 { theta } else { angle - theta };
+                        self.add_vertex(place(q.length(), theta))
+                    };
+                }
+            }
+            let mut half = grid_quads(&ids);
+            if h == 1 {
+                // The mirror image runs the other way round.
+                for f in &mut half {
+                    f.swap(1, 3);
+                }
+            }
+            quads.extend(half);
+        }
+        self.add_patch(quads, creased);
+        Sector {
+            apex,
+            radials: [first, last],
+        }
+    }
+
+    /// Close the meridian plane at `theta` with a flat grid between `column` (the rings'
+    /// vertices there, bottom to top), the sectors' radial lines `bottom` and `top` (apex to
+    /// ring) and the `axis` (bottom apex to top apex; interior ids created on first use).
+    fn meridian_cap(
+        &mut self,
+        theta: f64,
+        column: &[u32],
+        bottom: &[u32],
+        top: &[u32],
+        axis: &mut Vec<u32>,
+    ) -> Result<()> {
+        let rz = |w: &Wedge, v: u32| {
+            let p = w.parts.positions[v as usize];
+            DVec2::new(p.truncate().length(), p.z)
+        };
+        let rows = column.len() - 1;
+        let col: Vec<DVec2> = column.iter().map(|&v| rz(self, v)).collect();
+        let (z0, z1) = (rz(self, bottom[0]).y, rz(self, top[0]).y);
+        if z0 == z1 {
+            return Err(Error::invalid_argument(format!(
+                "caps: the profile's ends lie at one height z = {z0}; the flat caps on the \
+                 meridian planes need an axis segment between them"
+            )));
+        }
+        let rising = (z1 - z0).signum();
+        let monotone = col.windows(2).all(|w| (w[1].y - w[0].y) * rising > 0.0)
+            && (col[1].y - z0) * rising > 0.0
+            && (z1 - col[rows - 1].y) * rising > 0.0;
+        // Height fraction of each column vertex (its running maximum, so never falling) and
+        // chord-length fraction; a strictly rising column uses the heights alone.
+        let mut height = Vec::with_capacity(rows + 1);
+        let mut chord = vec![0.0];
+        for (i, c) in col.iter().enumerate() {
+            let h = ((c.y - z0) / (z1 - z0)).clamp(0.0, 1.0);
+            height.push(if i == 0 { h } else { h.max(height[i - 1]) });
+            if i > 0 {
+                chord.push(chord[i - 1] + (col[i] - col[i - 1]).length());
+            }
+        }
+        let bot: Vec<DVec2> = bottom.iter().map(|&v| rz(self, v)).collect();
+        let tp: Vec<DVec2> = top.iter().map(|&v| rz(self, v)).collect();
+        let k = bottom.len() - 1;
+        let layout = |u: Vec<f64>| {
+            let left: Vec<DVec2> = u
+                .iter()
+                .map(|&f| DVec2::new(0.0, z0 + f * (z1 - z0)))
+                .collect();
+            let grid = coons(&left, &col, &bot, &tp, &u, &uniform(k));
+            check_unfolded(&grid).map(|()| (left, grid))
+        };
+        let grid = if axis.is_empty() {
+            // The first cap chooses the axis spacing.
+            let blend = |mix: f64| -> Vec<f64> {
+                (0..=rows)
+                    .map(|i| match i {
+                        0 => 0.0,
+                        i if i == rows => 1.0,
+                        i => (1.0 - mix) * height[i] + mix * chord[i] / chord[rows],
+                    })
+                    .collect()
+            };
+            let mixes: &[f64] = if monotone { &[0.0] } else { &CHORD_SHARES };
+            let mut found = layout(blend(mixes[0]));
+            for &mix in &mixes[1..] {
+                if found.is_ok() {
+                    break;
+                }
+                found = layout(blend(mix));
+            }
+            let (left, grid) = found?;
+            axis.push(bottom[0]);
+            for p in &left[1..rows] {
+                let id = self.add_vertex(DVec3::new(0.0, 0.0, p.y));
+                axis.push(id);
+            }
+            axis.push(top[0]);
+            grid
+        } else {
+            // The second one shares the axis.
+            let u = axis
+                .iter()
+                .map(|&v| (self.parts.positions[v as usize].z - z0) / (z1 - z0))
+                .collect();
+            layout(u)?.1
+        };
+        let mut ids = vec![vec![0u32; k + 1]; rows + 1];
+        for i in 0..=rows {
+            for j in 0..=k {
+                ids[i][j] = if i == 0 {
+                    bottom[j]
+                } else if i == rows {
+                    top[j]
+                } else if j == 0 {
+                    axis[i]
+                } else if j == k {
+                    column[i]
+                } else {
+                    self.add_vertex(revolve_point(grid[i][j], theta))
+                };
+            }
+        }
+        self.add_patch(grid_quads(&ids), true);
+        Ok(())
+    }
+
+    /// Tag every vertex with three or more crease edges (and each of `extra`) as an
+    /// infinitely sharp corner, then return the parts.
+    fn finish(mut self, extra: &[u32]) -> MeshParts {
+        let mut count = vec![0usize; self.parts.positions.len()];
+        for c in &self.parts.creases {
+            for v in c.vertices {
+                count[v as usize] += 1;
+            }
+        }
+        let mut corners: Vec<u32> = (0..count.len() as u32)
+            .filter(|&v| count[v as usize] >= 3)
+            .chain(extra.iter().copied())
+            .chain(self.parts.corners.iter().map(|c| c.vertex))
+            .collect();
+        corners.sort_unstable();
+        corners.dedup();
+        self.parts.corners = corners
+            .into_iter()
+            .map(|vertex| Corner {
+                vertex,
+                sharpness: SHARPNESS_INFINITE,
+            })
+            .collect();
+        self.parts
+    }
+}
+
+/// Error if a quad of the meridian cap grid folds: its signed area has the wrong sign, or
+/// more than one of its corners turns the wrong way (a bow tie).
+fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
+    let quad = |i: usize, j: usize| {
+        [
+            grid[i][j],
+            grid[i][j + 1],
+            grid[i + 1][j + 1],
+            grid[i + 1][j],
+        ]
+    };
+    let area = |q: &[DVec2; 4]| (0..4).map(|c| q[c].perp_dot(q[(c + 1) % 4])).sum::<f64>();
+    let (a, b) = (grid.len() - 1, grid[0].len() - 1);
+    let total: f64 = (0..a)
+        .flat_map(|i| (0..b).map(move |j| (i, j)))
+        .map(|(i, j)| area(&quad(i, j)))
+        .sum();
+    for i in 0..a {
+        for j in 0..b {
+            let q = quad(i, j);
+            let wrong = (0..4)
+                .filter(|&c| {
+                    let (p, n) = (q[(c + 3) % 4], q[(c + 1) % 4]);
+                    (n - q[c]).perp_dot(p - q[c]) * total < 0.0
+                })
+                .count();
+            if area(&q) * total <= 0.0 || wrong > 1 {
+                return Err(Error::invalid_argument(format!(
+                    "caps: the flat cap between the profile and the axis would fold near \
+                     (r, z) = ({:.6}, {:.6}); its structured layout needs a profile whose \
+                     region down to the axis is roughly star-shaped (not a hollow shell)",
+                    q[0].x, q[0].y
+                )));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The mesh parts of a partial revolution: the side from `grid` (rings of
+/// `samples_around + 1` data points, `ring_s` their profile parameters), sectors at poles and
+/// (with caps) at flat ends, and meridian caps. See the module documentation.
+///
+/// Errors ([`Error::InvalidArgument`]): caps with fewer than 2 rings, ends at one height, or
+/// a folding meridian cap.
+pub fn wedge_parts(
+    input: &RevolveInput,
+    profile: &RevolvedProfile,
+    grid: &SweepGrid,
+    ring_s: &[f64],
+) -> Result<MeshParts> {
+    let capped = input.caps == Caps::Flat;
+    let rows = grid.rings.len();
+    if capped && rows < 2 {
+        return Err(Error::invalid_argument(format!(
+            "samples_profile = {}: the flat meridian caps need at least two rings between \
+             the poles; give more profile intervals",
+            input.samples_profile
+        )));
+    }
+    let side = SweepGrid {
+        ends: [GridEnd::Open; 2],
+        ..grid.clone()
+    };
+    // No grid caps: the side's ends are open.
+    let mut w = Wedge::new(grid_mesh(&side, &|_, _| DVec3::NAN)?);
+    let angle = input.angle_deg.to_radians();
+    let cols = input.samples_around + 1;
+    let ring_ids =
+        |i: usize| -> Vec<u32> { (i * cols..(i + 1) * cols).map(|v| v as u32).collect() };
+    let mut sectors = Vec::new();
+    let mut tips = Vec::new();
+    for (end, kind) in grid.ends.iter().enumerate() {
+        let i = if end == 0 { 0 } else { rows - 1 };
+        let s = ring_s[i];
+        let sector = match kind {
+            GridEnd::Open => continue,
+            GridEnd::Flat => {
+                let p = profile.point(s);
+                let flat = |rho: f64, theta: f64| revolve_point(DVec2::new(rho * p.x, p.y), theta);
+                w.sector(&ring_ids(i), angle, &flat, true)
+            }
+            GridEnd::Smooth | GridEnd::Tip(_) => {
+                let pole = profile.range()[end];
+                let on_surface =
+                    |rho: f64, theta: f64| cap_point(profile, s, pole, rho, theta / TAU);
+                let sector = w.sector(&ring_ids(i), angle, &on_surface, false);
+                tips.push(sector.apex);
+                sector
+            }
+        };
+        sectors.push(sector);
+    }
+    if capped {
+        let mut axis = Vec::new();
+        for (side, theta) in [(0, 0.0), (1, angle)] {
+            let column: Vec<u32> = (0..rows).map(|i| ring_ids(i)[side * (cols - 1)]).collect();
+            let (bottom, top) = (&sectors[0].radials[side], &sectors[1].radials[side]);
+            w.meridian_cap(theta, &column, bottom, top, &mut axis)?;
+        }
+    }
+    Ok(w.finish(&tips))
+}

@@ -1,0 +1,320 @@
+//! Partial revolutions (wedges): poles on the boundary meridians, and `"caps": "flat"` closing
+//! the solid with flat sector and meridian caps. Checks exact topology counts, the Euler
+//! characteristic, orientation, tags, the interpolation residual of the exact limit at every
+//! control vertex, and that the limit surface of every flat cap lies in its plane.
+
+#[path = "support/swept.rs"]
+mod swept;
+
+use std::f64::consts::PI;
+
+use glam::DVec3;
+use profsubd::construct::profile::Caps;
+use profsubd::construct::sweep::revolve;
+use profsubd::construct::sweep::revolve::RevolveInput;
+use profsubd::construct::sweep::SweptSurface;
+use profsubd::mesh::validate::check;
+use profsubd::mesh::SHARPNESS_INFINITE;
+use profsubd::Error;
+use swept::{crease_degrees, limit_samples, relative_residual};
+
+fn semicircle(n: usize) -> Vec<[f64; 2]> {
+    (0..=n)
+        .map(|i| {
+            let t = -PI / 2.0 + PI * i as f64 / n as f64;
+            [if i == 0 || i == n { 0.0 } else { t.cos() }, t.sin()]
+        })
+        .collect()
+}
+
+fn vase() -> Vec<[f64; 2]> {
+    vec![[1.0, 0.0], [1.4, 0.8], [1.3, 2.0], [0.9, 3.0], [0.9, 3.6]]
+}
+
+fn wedge(profile: Vec<[f64; 2]>, angle: f64, caps: Caps, np: usize, na: usize) -> RevolveInput {
+    let mut input = RevolveInput::new(profile);
+    input.angle_deg = angle;
+    input.caps = caps;
+    input.samples_profile = np;
+    input.samples_around = na;
+    input
+}
+
+/// A plane `n · x = d` (unit `n`).
+struct Plane {
+    n: DVec3,
+    d: f64,
+}
+
+/// The cap planes of a wedge by `angle` degrees whose ends (off the axis) are at `z`.
+fn cap_planes(angle: f64, z: &[f64]) -> Vec<Plane> {
+    let a = angle.to_radians();
+    let mut planes = vec![
+        Plane {
+            n: DVec3::Y,
+            d: 0.0,
+        },
+        Plane {
+            n: DVec3::new(-a.sin(), a.cos(), 0.0),
+            d: 0.0,
+        },
+    ];
+    planes.extend(z.iter().map(|&d| Plane { n: DVec3::Z, d }));
+    planes
+}
+
+/// For each plane: how many faces have all four data points in it, and the largest distance
+/// from it of the limit surface of those faces sampled on a 9 × 9 (u, v) grid, over the
+/// diagonal.
+fn cap_flatness(s: &SweptSurface, planes: &[Plane]) -> Vec<(usize, f64)> {
+    let diag = s.mesh.bounding_box_diagonal();
+    planes
+        .iter()
+        .map(|pl| {
+            let on = |v: u32| (pl.n.dot(s.targets[v as usize]) - pl.d).abs() < 1e-12 * diag;
+            let faces: Vec<u32> = (0..s.mesh.num_faces() as u32)
+                .filter(|&f| s.mesh.face(f as usize).iter().all(|&v| on(v)))
+                .collect();
+            let worst = limit_samples(s, &faces, 8)
+                .iter()
+                .map(|p| (pl.n.dot(*p) - pl.d).abs() / diag)
+                .fold(0.0, f64::max);
+            (faces.len(), worst)
+        })
+        .collect()
+}
+
+/// Volume enclosed by the data-point quads (divergence theorem, each quad as two triangles).
+fn volume(s: &SweptSurface) -> f64 {
+    let p = |v: u32| s.targets[v as usize];
+    (0..s.mesh.num_faces())
+        .map(|f| {
+            let q = s.mesh.face(f);
+            let tri = |a: u32, b: u32, c: u32| p(a).dot(p(b).cross(p(c))) / 6.0;
+            tri(q[0], q[1], q[2]) + tri(q[0], q[2], q[3])
+        })
+        .sum()
+}
+
+#[test]
+fn capped_vase_wedge_is_a_closed_solid_with_flat_caps() {
+    let (np, na, k) = (8usize, 16usize, 4usize);
+    let rings = np + 1;
+    let mut input = wedge(vase(), 270.0, Caps::Flat, np, na);
+    // One crease ring, at point 2 (z = 2).
+    input.sharp_angle_deg = 60.0;
+    input.corners = vec![2];
+    let s = revolve(&input).unwrap();
+    let r = check(&s.mesh);
+    // Side, two flat sectors (two k × k patches each), two (R − 1) × k meridian caps.
+    let faces = (rings - 1) * na + 2 * 2 * k * k + 2 * (rings - 1) * k;
+    let vertices = rings * (na + 1)
+        + 2 * (1 + 3 * (k - 1) + 2 * (k - 1) * (k - 1))
+        + (rings - 2)
+        + 2 * (rings - 2) * (k - 1);
+    assert_eq!((r.num_faces, r.num_vertices), (faces, vertices));
+    assert_eq!(r.euler_characteristic, 2);
+    assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
+    assert!(s.mesh.face_sizes().iter().all(|&n| n == 4));
+    // Valences: the sector quarter points 3, the apexes 3, nothing above 5.
+    assert!(
+        r.valences.keys().all(|&v| (3..=5).contains(&v)),
+        "{:?}",
+        r.valences
+    );
+    // Creases: 2 arcs of na, 4 sector radials of k, 2 columns of R − 1, the axis (R − 1),
+    // the crease ring (na).
+    assert_eq!(s.mesh.creases().len(), 3 * na + 4 * k + 3 * (rings - 1));
+    assert!(s
+        .mesh
+        .creases()
+        .iter()
+        .all(|c| c.sharpness == SHARPNESS_INFINITE));
+    // Corners where three creases meet: 2 apexes, the 4 ends of the two columns and the 2
+    // ends of the crease ring.
+    assert_eq!(crease_degrees(&s)[2], 8);
+    assert_eq!(s.mesh.corners().len(), 8);
+    // Outward: the volume enclosed by the data-point quads is positive, 3/4 of the capped
+    // full turn's (up to the polygon's chords: 16 sides over 270° or over 360°).
+    let mut full = wedge(vase(), 360.0, Caps::Flat, np, na);
+    (full.sharp_angle_deg, full.corners) = (60.0, vec![2]);
+    let full = revolve(&full).unwrap();
+    let chord = |deg: f64| {
+        let a = (deg / na as f64).to_radians();
+        a.sin() / a
+    };
+    let ratio = volume(&s) / volume(&full) / (0.75 * chord(270.0) / chord(360.0));
+    assert!((ratio - 1.0).abs() < 0.01, "{ratio}");
+    let rel = relative_residual(&s);
+    assert!(rel <= 1e-10, "{rel}");
+    assert!(s.fit.residual <= 1e-10 * s.mesh.bounding_box_diagonal());
+    for (count, worst) in cap_flatness(&s, &cap_planes(270.0, &[0.0, 3.6])) {
+        assert!(count > 0);
+        assert!(worst < 1e-12, "{worst}");
+    }
+}
+
+fn largest_valence(s: &SweptSurface) -> usize {
+    *check(&s.mesh).valences.keys().max().unwrap()
+}
+
+/// Largest distance of the limit surface (9 × 9 samples per face) from the unit sphere.
+fn sphere_distance(s: &SweptSurface) -> f64 {
+    let faces: Vec<u32> = (0..s.mesh.num_faces() as u32).collect();
+    limit_samples(s, &faces, 8)
+        .iter()
+        .map(|p| (p.length() - 1.0).abs())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn open_sphere_wedge_has_sector_poles_with_corner_apexes() {
+    let (np, na, k) = (12usize, 8usize, 2usize);
+    let rings = np - 1;
+    let s = revolve(&wedge(semicircle(np), 90.0, Caps::Open, np, na)).unwrap();
+    let r = check(&s.mesh);
+    assert_eq!(r.num_faces, (rings - 1) * na + 2 * 2 * k * k);
+    assert_eq!(
+        r.num_vertices,
+        rings * (na + 1) + 2 * (1 + 3 * (k - 1) + 2 * (k - 1) * (k - 1))
+    );
+    // A disc: one boundary loop through both poles.
+    assert_eq!((r.euler_characteristic, r.num_boundary_loops), (1, 1));
+    assert!(r.is_manifold() && r.is_consistently_oriented());
+    assert!(largest_valence(&s) <= 4);
+    // The apexes are the poles, tagged as infinitely sharp corners; no creases.
+    assert!(s.mesh.creases().is_empty());
+    let apexes: Vec<DVec3> = s
+        .mesh
+        .corners()
+        .iter()
+        .map(|c| s.targets[c.vertex as usize])
+        .collect();
+    assert_eq!(
+        apexes,
+        vec![DVec3::new(0.0, 0.0, -1.0), DVec3::new(0.0, 0.0, 1.0)]
+    );
+    assert!(relative_residual(&s) <= 1e-10);
+    // Distance to the sphere: as a full turn's at this profile sampling (4.4e-3, the worst
+    // being between rings, not in the sectors), and falling about 4× per doubling.
+    let d = sphere_distance(&s);
+    let fine = revolve(&wedge(semicircle(24), 90.0, Caps::Open, 24, 16)).unwrap();
+    let rate = d / sphere_distance(&fine);
+    assert!(d < 5e-3 && rate > 3.5, "{d} {rate}");
+}
+
+#[test]
+fn capped_sphere_wedge_closes_with_two_flat_meridian_caps() {
+    let (np, na, k) = (12usize, 16usize, 4usize);
+    let rings = np - 1;
+    let s = revolve(&wedge(semicircle(np), 270.0, Caps::Flat, np, na)).unwrap();
+    let r = check(&s.mesh);
+    assert_eq!(
+        r.num_faces,
+        (rings - 1) * na + 2 * 2 * k * k + 2 * (rings - 1) * k
+    );
+    assert_eq!(r.euler_characteristic, 2);
+    assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
+    assert!(largest_valence(&s) <= 5);
+    // Creases: two columns continued by the pole sectors' radial lines to the apexes, and
+    // the axis; only the apexes have three.
+    assert_eq!(
+        s.mesh.creases().len(),
+        2 * (rings - 1 + 2 * k) + (rings - 1)
+    );
+    assert_eq!(crease_degrees(&s)[2], 2);
+    assert_eq!(s.mesh.corners().len(), 2);
+    assert!(relative_residual(&s) <= 1e-10);
+    assert!(volume(&s) > 0.0);
+    for (count, worst) in cap_flatness(&s, &cap_planes(270.0, &[])) {
+        assert_eq!(count, (rings - 1) * k);
+        assert!(worst < 1e-12, "{worst}");
+    }
+}
+
+#[test]
+fn capped_half_cone_has_a_tip_and_a_flat_sector() {
+    let (np, na) = (6usize, 8usize);
+    let s = revolve(&wedge(
+        vec![[1.0, 0.0], [0.0, 2.0]],
+        180.0,
+        Caps::Flat,
+        np,
+        na,
+    ))
+    .unwrap();
+    let r = check(&s.mesh);
+    assert_eq!(r.euler_characteristic, 2);
+    assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
+    // Corners: the tip, the bottom apex and the two ends of the bottom arc.
+    assert_eq!(s.mesh.corners().len(), 4);
+    assert!(s
+        .mesh
+        .corners()
+        .iter()
+        .any(|c| s.targets[c.vertex as usize] == DVec3::new(0.0, 0.0, 2.0)));
+    assert!(relative_residual(&s) <= 1e-10);
+    assert!(volume(&s) > 0.0);
+    // At 180° both meridian caps lie in the plane y = 0.
+    for (count, worst) in cap_flatness(&s, &cap_planes(180.0, &[0.0])) {
+        assert!(count > 0);
+        assert!(worst < 1e-12, "{worst}");
+    }
+}
+
+#[test]
+fn capped_full_turn_cylinder_gets_flat_discs() {
+    let s = revolve(&wedge(
+        vec![[1.0, 0.0], [1.0, 2.0]],
+        360.0,
+        Caps::Flat,
+        4,
+        16,
+    ))
+    .unwrap();
+    let r = check(&s.mesh);
+    assert_eq!(r.euler_characteristic, 2);
+    assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
+    assert_eq!(r.valences.keys().copied().collect::<Vec<_>>(), vec![3, 4]);
+    assert_eq!(s.mesh.creases().len(), 2 * 16);
+    assert!(s.mesh.corners().is_empty());
+    assert!(relative_residual(&s) <= 1e-10);
+    let flat = cap_flatness(&s, &cap_planes(360.0, &[0.0, 2.0]));
+    for (count, worst) in &flat[2..] {
+        assert_eq!(*count, 16);
+        assert!(*worst < 1e-12, "{worst}");
+    }
+}
+
+#[test]
+fn bad_caps_and_angles_are_refused() {
+    let msg = |input: RevolveInput| match revolve(&input) {
+        Err(Error::InvalidArgument(m)) => m,
+        other => panic!("expected an error, got {other:?}"),
+    };
+    let sphere = |angle, caps, na| wedge(semicircle(8), angle, caps, 8, na);
+    assert!(msg(sphere(360.0, Caps::Flat, 16)).contains("nothing to cap"));
+    assert!(msg(sphere(0.0, Caps::Flat, 16)).contains("(0, 360]"));
+    assert!(msg(sphere(361.0, Caps::Open, 16)).contains("(0, 360]"));
+    assert!(msg(sphere(90.0, Caps::Open, 14)).contains("multiple of 4"));
+    assert!(msg(wedge(vase(), 90.0, Caps::Flat, 8, 10)).contains("multiple of 4"));
+    assert!(msg(wedge(vase(), 360.0, Caps::Flat, 8, 10)).contains("multiple of 4"));
+    // A hollow cup: the region between its wall and the axis is not the solid.
+    let cup = vec![
+        [0.0, 0.0],
+        [1.0, 0.0],
+        [1.0, 2.0],
+        [0.9, 2.0],
+        [0.9, 0.2],
+        [0.0, 0.2],
+    ];
+    let mut hollow = wedge(cup, 180.0, Caps::Flat, 24, 8);
+    hollow.interpolation = profsubd::curves::Interpolation::Polyline;
+    assert!(msg(hollow).contains("would fold"));
+    let ring = vec![[1.0, 0.0], [2.0, 1.0], [3.0, 0.0]];
+    assert!(msg(wedge(ring, 90.0, Caps::Flat, 8, 8)).contains("one height"));
+    assert!(msg(wedge(semicircle(2), 90.0, Caps::Flat, 2, 8)).contains("two rings"));
+    let mut crossing = wedge(vase(), 90.0, Caps::Flat, 8, 8);
+    crossing.profile[2][0] = -0.1;
+    assert!(msg(crossing).contains("crosses the axis"));
+}

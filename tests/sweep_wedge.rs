@@ -318,3 +318,54 @@ fn bad_caps_and_angles_are_refused() {
     crossing.profile[2][0] = -0.1;
     assert!(msg(crossing).contains("crosses the axis"));
 }
+
+#[test]
+fn capped_wedges_close_at_every_angle_and_sector_size() {
+    for na in [4usize, 8, 12] {
+        for angle in [30.0, 180.0, 350.0] {
+            for profile in [vase(), semicircle(8)] {
+                let s = revolve(&wedge(profile, angle, Caps::Flat, 8, na)).unwrap();
+                let what = format!("{na} around, {angle}°");
+                let r = check(&s.mesh);
+                assert_eq!(r.euler_characteristic, 2, "{what}");
+                assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
+                assert!(largest_valence(&s) <= 5, "{what}");
+                assert!(volume(&s) > 0.0, "{what}");
+                assert!(relative_residual(&s) <= 1e-10, "{what}");
+                for (count, worst) in cap_flatness(&s, &cap_planes(angle, &[])) {
+                    assert!(count > 0 && worst < 1e-12, "{what}: {count} {worst}");
+                }
+            }
+            // Open, with two poles: a disc whose boundary runs through both apexes.
+            let s = revolve(&wedge(semicircle(8), angle, Caps::Open, 8, na)).unwrap();
+            let r = check(&s.mesh);
+            assert_eq!((r.euler_characteristic, r.num_boundary_loops), (1, 1));
+            assert!(r.is_manifold() && r.is_consistently_oriented());
+            assert!(largest_valence(&s) <= 4);
+            assert_eq!(s.mesh.corners().len(), 2);
+            assert!(relative_residual(&s) <= 1e-10);
+        }
+    }
+}
+
+#[test]
+fn caps_stay_flat_under_semi_sharp_chaikin_edge_only() {
+    let mut input = wedge(vase(), 270.0, Caps::Flat, 8, 16);
+    input.corners = vec![2];
+    input.sharp_angle_deg = 60.0;
+    input.crease_sharpness = 2.0;
+    input.boundary = profsubd::BoundaryInterpolation::EdgeOnly;
+    input.crease_method = profsubd::CreaseMethod::Chaikin;
+    let s = revolve(&input).unwrap();
+    // The crease ring is semi-sharp, the cap creases infinitely sharp.
+    let sharp: Vec<f32> = s.mesh.creases().iter().map(|c| c.sharpness).collect();
+    assert_eq!(sharp.iter().filter(|&&x| x == 2.0).count(), 16);
+    assert_eq!(
+        sharp.iter().filter(|&&x| x == SHARPNESS_INFINITE).count(),
+        2 * 16 + 4 * 4 + 3 * 8
+    );
+    assert!(relative_residual(&s) <= 1e-10);
+    for (count, worst) in cap_flatness(&s, &cap_planes(270.0, &[0.0, 3.6])) {
+        assert!(count > 0 && worst < 1e-12, "{count} {worst}");
+    }
+}

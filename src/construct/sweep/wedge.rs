@@ -474,3 +474,56 @@ pub fn wedge_parts(
     }
     Ok(w.finish(&tips))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn coons_reproduces_a_bilinear_patch_and_its_sides() {
+        let corner = [
+            DVec2::new(0.0, 0.0),
+            DVec2::new(2.0, 0.5),
+            DVec2::new(0.2, 1.0),
+            DVec2::new(2.5, 2.0),
+        ];
+        let bilinear = |u: f64, v: f64| {
+            (1.0 - u) * ((1.0 - v) * corner[0] + v * corner[1])
+                + u * ((1.0 - v) * corner[2] + v * corner[3])
+        };
+        let (u, v) = (vec![0.0, 0.3, 1.0], uniform(2));
+        let left: Vec<DVec2> = u.iter().map(|&a| bilinear(a, 0.0)).collect();
+        let right: Vec<DVec2> = u.iter().map(|&a| bilinear(a, 1.0)).collect();
+        let bottom: Vec<DVec2> = v.iter().map(|&b| bilinear(0.0, b)).collect();
+        let top: Vec<DVec2> = v.iter().map(|&b| bilinear(1.0, b)).collect();
+        let grid = coons(&left, &right, &bottom, &top, &u, &v);
+        for (i, row) in grid.iter().enumerate() {
+            for (j, p) in row.iter().enumerate() {
+                assert!((*p - bilinear(u[i], v[j])).length() < 1e-15, "{i} {j}");
+            }
+        }
+        assert!(check_unfolded(&grid).is_ok());
+    }
+
+    #[test]
+    fn folded_and_bow_tie_quads_are_refused() {
+        let p = |x: f64, y: f64| DVec2::new(x, y);
+        // Two quads side by side; the middle column pushed past the right one folds them.
+        let good = vec![
+            vec![p(0.0, 0.0), p(1.0, 0.0), p(2.0, 0.0)],
+            vec![p(0.0, 1.0), p(1.0, 1.0), p(2.0, 1.0)],
+        ];
+        assert!(check_unfolded(&good).is_ok());
+        let mut folded = good.clone();
+        folded[0][1] = p(2.5, 0.0);
+        folded[1][1] = p(2.5, 1.0);
+        let e = check_unfolded(&folded).unwrap_err();
+        assert!(matches!(e, Error::InvalidArgument(m) if m.contains("would fold")));
+        // A bow tie: the top edge crosses the bottom one.
+        let bow = vec![
+            vec![p(0.0, 0.0), p(1.0, 0.0)],
+            vec![p(1.0, 1.0), p(0.0, 1.0)],
+        ];
+        assert!(check_unfolded(&bow).is_err());
+    }
+}

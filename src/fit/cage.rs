@@ -103,13 +103,96 @@ pub fn check_limit_exists(mesh: &Mesh, options: &SubdivOptions) -> Result<()> {
         "all their faces are holes"
     };
     Err(Error::invalid_argument(format!(
-        "cannot interpolate the data points of {} vertices (the first: vertex {first} at \
+        "cannot interpolate the data points of {} (the first: vertex {first} at \
          ({}, {}, {})): no limit surface passes through them ({cause}); use boundary \
          edge-only or edge-and-corner, or close the surface (flat caps, poles, a full turn, \
          closed curves)",
-        without.len(),
+        match without.len() {
+            1 => "1 vertex".to_string(),
+            n => format!("{n} vertices"),
+        },
         p.x,
         p.y,
         p.z
     )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A wavy `n × n` grid of quads; `holes` tagged.
+    fn grid(n: u32, holes: Vec<u32>) -> MeshParts {
+        let idx = |i: u32, j: u32| i * (n + 1) + j;
+        let mut parts = MeshParts {
+            positions: (0..=n)
+                .flat_map(|i| (0..=n).map(move |j| (i, j)))
+                .map(|(i, j)| DVec3::new(i as f64, j as f64, ((i * j) as f64 * 0.7).sin()))
+                .collect(),
+            holes,
+            ..Default::default()
+        };
+        for i in 0..n {
+            for j in 0..n {
+                parts.face_sizes.push(4);
+                parts.face_indices.extend([
+                    idx(i, j),
+                    idx(i + 1, j),
+                    idx(i + 1, j + 1),
+                    idx(i, j + 1),
+                ]);
+            }
+        }
+        parts
+    }
+
+    fn message(r: Result<FittedCage>) -> String {
+        match r {
+            Err(Error::InvalidArgument(m)) => m,
+            other => panic!("expected InvalidArgument, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn fits_and_tags_under_the_given_options() {
+        for boundary in [
+            BoundaryInterpolation::EdgeOnly,
+            BoundaryInterpolation::EdgeAndCorner,
+        ] {
+            let options = FitOptions::new(boundary, CreaseMethod::Chaikin);
+            let fitted = fit_cage(grid(4, vec![]), options).unwrap();
+            assert_eq!(fitted.mesh.options(), options.tags());
+            assert_eq!(fitted.targets, grid(4, vec![]).positions);
+            let limits = crate::eval::limit_stencils(&fitted.mesh, &options.resolve())
+                .unwrap()
+                .apply(fitted.mesh.positions())
+                .unwrap();
+            for (l, t) in limits.iter().zip(&fitted.targets) {
+                assert!((*l - *t).length() <= fitted.fit.tolerance);
+            }
+        }
+    }
+
+    #[test]
+    fn refuses_vertices_without_a_limit_surface() {
+        // Boundary none: the 12 border faces are holes, so the 16 border vertices have no
+        // surface; the 9 interior vertices keep the 4 inner faces.
+        let none = FitOptions::new(BoundaryInterpolation::None, CreaseMethod::Uniform);
+        let m = message(fit_cage(grid(4, vec![]), none));
+        assert!(
+            m.contains("of 16 vertices (the first: vertex 0 at (0, 0, 0))"),
+            "{m}"
+        );
+        assert!(
+            m.contains("boundary interpolation none makes the faces"),
+            "{m}"
+        );
+        // A tagged hole takes the surface from the corner vertex it alone holds.
+        let m = message(fit_cage(grid(4, vec![0]), FitOptions::default()));
+        assert!(
+            m.contains("of 1 vertex (") && m.contains("all their faces are holes"),
+            "{m}"
+        );
+        assert!(fit_cage(grid(4, vec![5]), FitOptions::default()).is_ok());
+    }
 }

@@ -85,11 +85,14 @@ pub enum Command {
     /// (rings through every corner), closes poles with quad caps (smooth) or a corner tip
     /// (pointed), creases rings at corners, and fits the control points so that the exact
     /// limit surface passes through every data point. Without INPUT: a built-in bottle.
+    /// The fit uses, and the OBJ records, the boundary rule and crease method (JSON
+    /// `boundary`, `crease_method`; --boundary, --crease override them).
     Profile(profile::ProfileArgs),
     /// Build a surface of revolution: a profile (r, z) turned about the z axis.
     ///
     /// Reads the profile from JSON (bottom to top, r >= 0; angle_deg, samples_profile,
-    /// samples_around, interpolation, sharp_angle_deg, corners), closes ends on the axis with quad
+    /// samples_around, interpolation, sharp_angle_deg, corners, crease_sharpness, boundary,
+    /// crease_method), closes ends on the axis with quad
     /// caps (smooth) or a corner tip (pointed), creases rings at profile corners, and fits
     /// the control points so that the exact limit surface passes through every data point.
     Revolve(revolve::RevolveArgs),
@@ -98,7 +101,8 @@ pub enum Command {
     ///
     /// Reads profile and trajectory from JSON (closed_profile, closed_trajectory, frame,
     /// samples_profile, samples_trajectory, scale, profile_end, interpolation,
-    /// sharp_angle_deg, corners), creases profile corners along the sweep and trajectory corners
+    /// sharp_angle_deg, corners, crease_sharpness, boundary, crease_method), creases profile
+    /// corners along the sweep and trajectory corners
     /// across it (mitered), and fits the control points so that the exact limit surface
     /// passes through every data point.
     Sweep(sweep::SweepArgs),

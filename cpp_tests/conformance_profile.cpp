@@ -75,21 +75,6 @@ std::vector<bool> darts(const Far::TopologyRefiner &refiner) {
     return out;
 }
 
-// profsubd's exact limit positions of the control vertices.
-bool profsubd_vertex_limits(const profsubd_mesh *mesh, std::vector<double> *out) {
-    profsubd_evaluator *ev = nullptr;
-    if (profsubd_evaluator_new(mesh, nullptr, &ev) != PROFSUBD_OK) {
-        return false;
-    }
-    size_t needed = 0;
-    profsubd_evaluator_limit_vertices(ev, nullptr, nullptr, nullptr, 0, &needed);
-    out->assign(needed * 3, 0.0);
-    profsubd_status st = profsubd_evaluator_limit_vertices(ev, out->data(), nullptr, nullptr,
-                                                           needed, &needed);
-    profsubd_evaluator_free(ev);
-    return st == PROFSUBD_OK;
-}
-
 // OpenMesh takes every face (so every edge and vertex is manifold and the orientation is
 // consistent); a closed model has no boundary edge and Euler characteristic 2.
 void check_openmesh(Checker &ck, const OsdShape &s, bool closed) {

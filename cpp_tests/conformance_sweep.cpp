@@ -1,7 +1,8 @@
 // Revolutions and sweeps against OpenSubdiv: the limit position of every control vertex,
 // computed by OpenSubdiv's Bfr::Surface<double> at a corner of one of its faces (approximation
 // levels 10), must equal the data point the vertex interpolates, to 1e-10 x the bounding-box
-// diagonal of the data points.
+// diagonal of the data points; so must profsubd's own exact limit through the C API
+// (profsubd_evaluator_limit_vertices).
 //
 // Models: the checked-in examples (examples/sweeps/*.obj with *.targets.txt: wine glass,
 // torus knot tube, handrail, capped 270-degree cutaways of a wine glass and a vase) and
@@ -37,6 +38,7 @@ struct Model {
     std::string name;
     OsdShape shape;
     std::vector<double> targets;  // 3 per vertex
+    MeshPtr mesh;                 // the same mesh through the C API
 };
 
 // Largest |a_i - b_i| over points of 3 doubles, and the diagonal of b's bounding box.
@@ -68,11 +70,17 @@ void check_model(Checker &ck, const Model &m) {
     ck.equal(m.targets.size(), m.shape.positions.size(), "one target per vertex");
     double worst = 0, diag = 0;
     compare(bfr_vertex_limits(*refiner, m.shape.positions), m.targets, &worst, &diag);
+    std::vector<double> exact;
+    double worst_exact = std::nan("");
+    if (ck.check(profsubd_vertex_limits(m.mesh.get(), &exact), "profsubd evaluator")) {
+        compare(exact, m.targets, &worst_exact, &diag);
+    }
     std::ostringstream s;
     s << m.name << ": " << m.targets.size() / 3 << " vertices, Bfr limit vs target max "
-      << worst / diag << " x diagonal";
+      << worst / diag << " x diagonal, profsubd exact vs target " << worst_exact / diag;
     ck.note(s.str());
     ck.check(worst <= 1e-10 * diag, "Bfr's limit at every control vertex equals its target");
+    ck.check(worst_exact <= 1e-10 * diag, "profsubd's exact limit equals every target");
 }
 
 struct SweptDeleter {
@@ -108,6 +116,7 @@ bool take_result(Checker &ck, const std::string &name, profsubd_status st, profs
     out->name = name;
     static TempDir dir;
     err = shape_via_obj(mesh.get(), dir.file("model.obj"), &out->shape);
+    out->mesh = std::move(mesh);
     return ck.check(err.empty(), "OBJ round trip: " + err) &&
            ck.check(out->shape.positions == capi.positions, "OBJ positions are exact");
 }
@@ -167,7 +176,8 @@ int main() {
         std::string err;
         ck.set_context(name);
         if (ck.check(read_osd_shape(base + ".obj", &m.shape, &err), "read " + base + ".obj: " + err) &&
-            ck.check(read_targets(base + ".targets.txt", &m.targets), "read targets")) {
+            ck.check(read_targets(base + ".targets.txt", &m.targets), "read targets") &&
+            ck.check((m.mesh = load_obj_capi(base + ".obj", &err)) != nullptr, "C API reads it: " + err)) {
             models.push_back(std::move(m));
         }
     }
@@ -307,9 +317,9 @@ int main() {
     ck.equal(profsubd_sweep(arc.data(), arc.size() / 2, bend.data(), bend.size() / 3, raw_options, &refused),
              PROFSUBD_ERROR_INVALID_ARGUMENT, "refused");
     ck.check(refused == nullptr, "no result");
-    for (const Model &c : corner_models) {
+    for (Model &c : corner_models) {
         check_rule_matters(ck, c);
-        models.push_back(c);
+        models.push_back(std::move(c));
     }
     for (const Model &m : models) {
         check_model(ck, m);

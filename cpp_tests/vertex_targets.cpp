@@ -48,6 +48,19 @@ std::vector<double> bfr_vertex_limits(const Far::TopologyRefiner &refiner, const
     return out;
 }
 
+bool profsubd_vertex_limits(const profsubd_mesh *mesh, std::vector<double> *out) {
+    profsubd_evaluator *ev = nullptr;
+    if (profsubd_evaluator_new(mesh, nullptr, &ev) != PROFSUBD_OK) {
+        return false;
+    }
+    size_t needed = 0;
+    profsubd_evaluator_limit_vertices(ev, nullptr, nullptr, nullptr, 0, &needed);
+    out->assign(needed * 3, 0.0);
+    profsubd_status st = profsubd_evaluator_limit_vertices(ev, out->data(), nullptr, nullptr, needed, &needed);
+    profsubd_evaluator_free(ev);
+    return st == PROFSUBD_OK;
+}
+
 std::string shape_via_obj(const profsubd_mesh *mesh, const std::string &path, OsdShape *out) {
     profsubd_status st = profsubd_mesh_write_obj(mesh, path.c_str());
     if (st != PROFSUBD_OK) {

@@ -23,6 +23,10 @@ bool read_targets(const std::string &path, std::vector<double> *out);
 std::vector<double> bfr_vertex_limits(const OpenSubdiv::Far::TopologyRefiner &refiner,
                                       const std::vector<double> &points);
 
+// profsubd's exact limit position of every control vertex (profsubd_evaluator_limit_vertices,
+// options from the mesh's tags), 3 doubles each; false if the C API fails.
+bool profsubd_vertex_limits(const profsubd_mesh *mesh, std::vector<double> *out);
+
 // The mesh as a reader of its OBJ file sees it: written to `path` by profsubd_mesh_write_obj,
 // then parsed by the harness's reader, so `out->options` are the Sdc options its tags record.
 // Returns an empty string on success, otherwise what failed.

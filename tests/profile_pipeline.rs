@@ -40,10 +40,11 @@ fn relative_residual(model: &ProfileModel) -> f64 {
     worst / (hi - lo).length()
 }
 
-#[test]
-fn ellipsoid_limit_surface_converges_to_the_ellipsoid() {
-    let (a, b, c) = (2.0, 1.0, 1.5);
-    let size = 2.0 * a;
+/// Largest distance between the fitted limit surface of the ellipsoid with semi-axes
+/// `(a, b, c)` (silhouettes of 400 points) and the ellipsoid, over its size, at each sampling.
+fn ellipsoid_errors(a: f64, b: f64, c: f64, samplings: &[(u32, u32)]) -> Vec<f64> {
+    let size = 2.0 * a.max(b).max(c);
+    // First-order distance to the quadric: |f| / |∇f|.
     let dist = |p: DVec3| {
         let f = (p.x / a).powi(2) + (p.y / b).powi(2) + (p.z / c).powi(2) - 1.0;
         let g = DVec3::new(
@@ -53,28 +54,52 @@ fn ellipsoid_limit_surface_converges_to_the_ellipsoid() {
         );
         f.abs() / g.length()
     };
-    let mut errors = Vec::new();
-    for (around, along) in [(32, 16), (64, 32)] {
-        let mut input = ellipsoid(a, b, c, 400);
-        input.around = around;
-        input.along = along;
-        let model = build(&input).unwrap();
-        assert_eq!(model.ends, [EndKind::Smooth, EndKind::Smooth]);
-        assert!(relative_residual(&model) <= 1e-10);
-        let e = max_over_limit(&model, 4, dist) / size;
+    samplings
+        .iter()
+        .map(|&(around, along)| {
+            let mut input = ellipsoid(a, b, c, 400);
+            input.around = around;
+            input.along = along;
+            let model = build(&input).unwrap();
+            assert_eq!(model.ends, [EndKind::Smooth, EndKind::Smooth]);
+            assert!(relative_residual(&model) <= 1e-10);
+            let e = max_over_limit(&model, 4, dist) / size;
+            println!(
+                "ellipsoid ({a}, {b}, {c}) {around} x {along}: max distance / size = {e:.3e}, \
+                 fit residual {:.3e}",
+                model.fit.residual
+            );
+            e
+        })
+        .collect()
+}
+
+#[test]
+fn ellipsoid_limit_surface_converges_to_the_ellipsoid() {
+    // The rings are graded towards the poles (`construct::grading`), so the caps and their
+    // valence-3 corners shrink like h² and the error there falls like the rest, 12-17× per
+    // doubling. With uniform rings and caps spanning a quarter of the rings it fell 3.67
+    // then 3.85× for (2, 1, 1.5) (the valence-3 corners' O(κh²) term), 1.7 then 2.4× for
+    // (1, 1, 3). Not covered: a strongly oblate (3, 2, 0.75), whose rim (curvature radius
+    // 0.19) is under-resolved at 32 × 16: 1.25e-3, rates 3.74 then 6.12.
+    for (a, b, c) in [
+        (2.0, 1.0, 1.5),
+        (1.0, 1.0, 1.0),
+        (1.0, 1.0, 3.0),
+        (2.0, 2.0, 1.0),
+    ] {
+        let errors = ellipsoid_errors(a, b, c, &[(32, 16), (64, 32), (128, 64)]);
+        let rates = [errors[0] / errors[1], errors[1] / errors[2]];
         println!(
-            "ellipsoid {around} x {along}: max distance / size = {e:.3e}, fit residual {:.3e}",
-            model.fit.residual
+            "ellipsoid ({a}, {b}, {c}) convergence rate per doubling: {:.2}, {:.2}",
+            rates[0], rates[1]
         );
-        errors.push(e);
+        assert!(errors[0] < 1e-3, "({a}, {b}, {c}): {errors:?}");
+        assert!(
+            rates.iter().all(|&r| r >= 4.0),
+            "({a}, {b}, {c}): rates {rates:?}"
+        );
     }
-    assert!(errors[0] < 1e-3, "{errors:?}");
-    // The largest error sits on the faces around the valence-3 corners of the pole caps,
-    // where Catmull-Clark converges as O(h²): measured 3.67 (32→64), 3.86 (64→128), rising
-    // towards 4; away from the caps (|z| < c/2) the error falls by 15× then 54×.
-    let rate = errors[0] / errors[1];
-    println!("ellipsoid convergence rate per doubling: {rate:.2}");
-    assert!(rate >= 3.6, "rate {rate}");
 }
 
 #[test]

@@ -87,11 +87,12 @@ fn revolved_semicircle_converges_to_the_sphere() {
         input.samples_around = na;
         revolve(&input).unwrap()
     };
-    // The largest error sits next to the grid caps' valence-3 vertices (on their meridian,
-    // between the first two rings): Catmull-Clark's limit surface is flat at a valence-3
-    // vertex, so the error there is second order and the rate approaches 4 from below
-    // (measured 3.93 then 3.98); everywhere else it falls 16× per doubling.
-    check_convergence("sphere", 3.9, &build, &|p| (p.length() - r).abs());
+    // Next to the grid caps' valence-3 vertices an interpolating Catmull-Clark fit is only
+    // second order (O(κh²)); with uniform rings that term dominated and the rate approached
+    // 4 from below (3.93, 3.98). The rings are graded towards the poles
+    // (`construct::grading`), so the caps shrink like h² and the error falls ~14-15× per
+    // doubling there too.
+    check_convergence("sphere", 4.0, &build, &|p| (p.length() - r).abs());
 }
 
 #[test]

@@ -66,7 +66,9 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
         )));
     }
     let k = n / 4;
-    let cap_rings = k.div_ceil(2);
+    // The cap fills the ring next to the pole, whose distance shrinks like h² with the
+    // graded rings (see `crate::construct::grading`).
+    let cap_rings = 1;
     let rings = Rings::new(&sil, &param, input.along as usize, cap_rings)?;
     let meridian = |q: usize| TAU * q as f64 / n as f64;
     let curve_at = |t: f64| param.points(&sil, t);

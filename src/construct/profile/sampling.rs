@@ -2,11 +2,13 @@
 //!
 //! Each segment `[T_j, T_{j+1}]` gets intervals in proportion to its length (largest
 //! deficit first), at least one, and a segment next to a smooth pole at least the number of
-//! rings its grid cap spans (`⌈around / 8⌉`). Inside a segment rings are uniform in `t`, so
-//! a ring passes through every breakpoint.
+//! rings its grid cap spans. Inside a segment rings are uniform in `t`, except in a segment
+//! ending at a smooth pole, where they are graded towards the pole
+//! ([`crate::construct::grading`]); a ring passes through every breakpoint.
 
 use super::param::CommonParam;
 use super::silhouettes::{EndKind, Silhouettes};
+use crate::construct::grading::graded;
 use crate::error::{Error, Result};
 
 /// The rings of a profile model.
@@ -35,8 +37,9 @@ impl Rings {
             min[0] = min[0].max(cap_rings);
         }
         if sil.ends[1] == EndKind::Smooth {
+            // Two caps need a ring between them: caps on one ring would leave valence 2.
             min[segs - 1] = if segs == 1 && sil.ends[0] == EndKind::Smooth {
-                2 * cap_rings
+                2 * cap_rings + 1
             } else {
                 min[segs - 1].max(cap_rings)
             };
@@ -62,10 +65,14 @@ impl Rings {
         }
         let mut t = Vec::with_capacity(along + 1);
         let mut ring_of_break = Vec::with_capacity(segs + 1);
-        for (w, &c) in param.t.windows(2).zip(&count) {
+        for (j, (w, &c)) in param.t.windows(2).zip(&count).enumerate() {
             ring_of_break.push(t.len());
+            let poles = [
+                j == 0 && sil.ends[0] == EndKind::Smooth,
+                j + 1 == segs && sil.ends[1] == EndKind::Smooth,
+            ];
             for i in 0..c {
-                t.push(w[0] + (w[1] - w[0]) * i as f64 / c as f64);
+                t.push(w[0] + (w[1] - w[0]) * graded(i as f64 / c as f64, poles));
             }
         }
         ring_of_break.push(t.len());

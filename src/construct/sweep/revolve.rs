@@ -43,6 +43,7 @@ use super::mesh::grid_mesh;
 use super::profile::check_no_crossing;
 use super::sweep::{sample_counts_ok, GridEnd, SweepGrid};
 use super::wedge::wedge_parts;
+use crate::construct::grading::grade_samples;
 use crate::construct::pole_cap::CapVertex;
 use crate::construct::profile::input::{
     check_crease_sharpness, default_crease_sharpness, deserialize_sharpness,
@@ -400,6 +401,7 @@ impl RevolveInput {
                 self.samples_profile
             )));
         }
+        grade_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth));
         if ends[1] != GridEnd::Open {
             samples.pop();
         }

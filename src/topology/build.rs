@@ -10,23 +10,6 @@ use crate::catmark::crease::{is_sharp, vertex_rule};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
 
-/// Incidence lists grown one member at a time, flattened at the end.
-struct Lists(Vec<Vec<u32>>);
-
-impl Lists {
-    fn flatten(self) -> (Vec<u32>, Vec<u32>) {
-        let mut offsets = Vec::with_capacity(self.0.len() + 1);
-        let total = self.0.iter().map(Vec::len).sum();
-        let mut flat = Vec::with_capacity(total);
-        offsets.push(0);
-        for l in self.0 {
-            flat.extend_from_slice(&l);
-            offsets.push(flat.len() as u32);
-        }
-        (offsets, flat)
-    }
-}
-
 impl Level {
     /// The base level of `mesh` under the options the mesh carries (file tags, defaults for
     /// the rest).
@@ -42,8 +25,14 @@ impl Level {
     }
 
     /// `Vtr::Level::orderVertexFacesAndEdges`: the faces and edges around `v` in
-    /// counter-clockwise order, or `None` if they do not form a single fan.
-    fn ordered_faces_and_edges(&self, v: usize) -> Option<(Vec<u32>, Vec<u32>)> {
+    /// counter-clockwise order into `faces` and `edges` (cleared first), or `None` if they do
+    /// not form a single fan.
+    fn ordered_faces_and_edges(
+        &self,
+        v: usize,
+        faces: &mut Vec<u32>,
+        edges: &mut Vec<u32>,
+    ) -> Option<()> {
         let v_edges = self.vertex_edges(v);
         let v_faces = self.vertex_faces(v);
         let (fc, ec) = (v_faces.len(), v_edges.len());
@@ -72,8 +61,8 @@ impl Level {
             }
             (f_start, e_start, fv_start) = found?;
         }
-        let mut faces = Vec::with_capacity(fc);
-        let mut edges = Vec::with_capacity(ec);
+        faces.clear();
+        edges.clear();
         faces.push(f_start);
         edges.push(e_start);
         let e_first = e_start;
@@ -100,7 +89,7 @@ impl Level {
             }
             e_start = e_next;
         }
-        Some((faces, edges))
+        Some(())
     }
 
     /// `Vtr::Level::populateLocalIndices`.
@@ -191,17 +180,49 @@ impl Level {
     }
 }
 
+/// Offsets of rows of the given lengths (`offsets[i]..offsets[i + 1]` is row `i`).
+fn offsets_of(lengths: impl IntoIterator<Item = u32>) -> Vec<u32> {
+    let lengths = lengths.into_iter();
+    let mut offsets = Vec::with_capacity(lengths.size_hint().0 + 1);
+    let mut total = 0u32;
+    offsets.push(0);
+    for n in lengths {
+        total += n;
+        offsets.push(total);
+    }
+    offsets
+}
+
 /// `Vtr::Level::completeTopologyFromFaceVertices`, then orientation and local indices.
+///
+/// Flat arrays throughout: vertex-face rows are counted first; vertex-edge rows get room for
+/// two edges per incident face-vertex (the most a face-vertex can create) and are compacted
+/// at the end; edge-face rows are filled once all edges are known, in the order the faces
+/// met the edge.
 fn topology_from_face_vertices(mesh: &Mesh, options: SubdivOptions) -> Level {
     let nv = mesh.num_vertices();
     let nf = mesh.num_faces();
     let face_offsets = mesh.face_offsets().to_vec();
     let face_verts = mesh.face_indices().to_vec();
-    let mut face_edges = vec![0u32; face_verts.len()];
-    let mut edge_verts: Vec<[u32; 2]> = Vec::with_capacity(2 * nv);
-    let mut edge_faces: Vec<Vec<u32>> = Vec::with_capacity(2 * nv);
-    let mut vert_faces: Vec<Vec<u32>> = vec![Vec::new(); nv];
-    let mut vert_edges: Vec<Vec<u32>> = vec![Vec::new(); nv];
+    let nfv = face_verts.len();
+    let mut face_edges = vec![0u32; nfv];
+
+    let mut occurrences = vec![0u32; nv];
+    for &v in &face_verts {
+        occurrences[v as usize] += 1;
+    }
+    let vert_face_offsets = offsets_of(occurrences.iter().copied());
+    let mut vert_faces = vec![0u32; nfv];
+    let mut vf_fill: Vec<u32> = vert_face_offsets[..nv].to_vec();
+    // Vertex-edge rows with room for 2 edges per face-vertex; `ve_len` used so far.
+    let mut ve_room = vec![0u32; 2 * nfv];
+    let mut ve_len = vec![0u32; nv];
+    let ve_start = |v: u32| 2 * vert_face_offsets[v as usize] as usize;
+
+    let mut edge_verts: Vec<[u32; 2]> = Vec::with_capacity(nfv);
+    // Per edge: its number of faces so far and the last of them.
+    let mut edge_num_faces: Vec<u32> = Vec::with_capacity(nfv);
+    let mut edge_last_face: Vec<u32> = Vec::with_capacity(nfv);
     let mut non_manifold_edges: Vec<u32> = Vec::new();
 
     for f in 0..nf {
@@ -212,18 +233,20 @@ fn topology_from_face_vertices(mesh: &Mesh, options: SubdivOptions) -> Level {
             let v1 = face_verts[start + (i + 1) % n];
             let mut edge = None;
             if v0 != v1 {
-                edge = find_edge_in(&edge_verts, &vert_edges[v0 as usize], v0, v1);
+                let s0 = ve_start(v0);
+                let around = &ve_room[s0..s0 + ve_len[v0 as usize] as usize];
+                edge = find_edge_in(&edge_verts, around, v0, v1);
             } else {
                 non_manifold_edges.push(edge_verts.len() as u32);
             }
             if let Some(e) = edge {
-                let ef = &edge_faces[e as usize];
-                if *ef.last().expect("an existing edge has a face") == f as u32 {
+                let e_us = e as usize;
+                if edge_last_face[e_us] == f as u32 {
                     // The edge is already in this face: a new instance.
                     non_manifold_edges.push(e);
                     non_manifold_edges.push(edge_verts.len() as u32);
                     edge = None;
-                } else if ef.len() > 1 || v0 == edge_verts[e as usize][0] {
+                } else if edge_num_faces[e_us] > 1 || v0 == edge_verts[e_us][0] {
                     // A third face, or a second face with the same direction.
                     non_manifold_edges.push(e);
                 }
@@ -233,21 +256,41 @@ fn topology_from_face_vertices(mesh: &Mesh, options: SubdivOptions) -> Level {
                 None => {
                     let e = edge_verts.len() as u32;
                     edge_verts.push([v0, v1]);
-                    edge_faces.push(Vec::with_capacity(2));
-                    vert_edges[v0 as usize].push(e);
-                    vert_edges[v1 as usize].push(e);
+                    edge_num_faces.push(0);
+                    edge_last_face.push(u32::MAX);
+                    for end in [v0, v1] {
+                        let len = &mut ve_len[end as usize];
+                        ve_room[ve_start(end) + *len as usize] = e;
+                        *len += 1;
+                    }
                     e
                 }
             };
-            edge_faces[e as usize].push(f as u32);
-            vert_faces[v0 as usize].push(f as u32);
+            edge_num_faces[e as usize] += 1;
+            edge_last_face[e as usize] = f as u32;
+            let slot = &mut vf_fill[v0 as usize];
+            vert_faces[*slot as usize] = f as u32;
+            *slot += 1;
             face_edges[start + i] = e;
         }
     }
     let ne = edge_verts.len();
-    let (edge_face_offsets, edge_faces) = Lists(edge_faces).flatten();
-    let (vert_face_offsets, vert_faces) = Lists(vert_faces).flatten();
-    let (vert_edge_offsets, vert_edges) = Lists(vert_edges).flatten();
+    let edge_face_offsets = offsets_of(edge_num_faces.iter().copied());
+    let mut edge_faces = vec![0u32; edge_face_offsets[ne] as usize];
+    let mut ef_fill: Vec<u32> = edge_face_offsets[..ne].to_vec();
+    for f in 0..nf {
+        for &e in &face_edges[face_offsets[f] as usize..face_offsets[f + 1] as usize] {
+            let slot = &mut ef_fill[e as usize];
+            edge_faces[*slot as usize] = f as u32;
+            *slot += 1;
+        }
+    }
+    let vert_edge_offsets = offsets_of(ve_len.iter().copied());
+    let mut vert_edges = Vec::with_capacity(vert_edge_offsets[nv] as usize);
+    for v in 0..nv as u32 {
+        let s0 = ve_start(v);
+        vert_edges.extend_from_slice(&ve_room[s0..s0 + ve_len[v as usize] as usize]);
+    }
     let mut edge_non_manifold = vec![false; ne];
     let mut vert_non_manifold = vec![false; nv];
     for &e in &non_manifold_edges {
@@ -279,12 +322,13 @@ fn topology_from_face_vertices(mesh: &Mesh, options: SubdivOptions) -> Level {
         vert_sharpness: vec![0.0; nv],
         vert_rules: Vec::new(),
     };
+    let (mut faces, mut edges) = (Vec::new(), Vec::new());
     for v in 0..nv {
         if level.vert_non_manifold[v] {
             continue;
         }
-        match level.ordered_faces_and_edges(v) {
-            Some((faces, edges)) => {
+        match level.ordered_faces_and_edges(v, &mut faces, &mut edges) {
+            Some(()) => {
                 let fr =
                     level.vert_face_offsets[v] as usize..level.vert_face_offsets[v + 1] as usize;
                 level.vert_faces[fr].copy_from_slice(&faces);

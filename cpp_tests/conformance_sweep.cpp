@@ -230,6 +230,18 @@ int main() {
             models.push_back(std::move(m));
         }
     }
+    // A thin-walled cup: its meridian caps bend around the column's ends.
+    const std::vector<double> cup = {0, 0, 1, 0, 1, 2, 0.9, 2, 0.9, 0.2, 0, 0.2};
+    profsubd_options_set_interpolation(raw_options, 1);
+    profsubd_options_set_sweep_samples(raw_options, 24, 8);
+    profsubd_options_set_revolve_angle(raw_options, 180.0);
+    profsubd_swept *cup_result = nullptr;
+    profsubd_status cup_status = profsubd_revolve(cup.data(), cup.size() / 2, raw_options, &cup_result);
+    Model cup_model;
+    if (take_result(ck, "capped cup (polyline)", cup_status, cup_result, &cup_model)) {
+        models.push_back(std::move(cup_model));
+    }
+    profsubd_options_set_interpolation(raw_options, 0);
     profsubd_options_set_caps(raw_options, PROFSUBD_CAPS_OPEN);
     profsubd_options_set_revolve_angle(raw_options, 360.0);
     // Sweeps: a torus (circle along a circle), a square tube along a closed wavy curve (four
@@ -325,6 +337,6 @@ int main() {
         check_model(ck, m);
     }
     ck.set_context("");
-    ck.equal(models.size(), size_t(20), "every model built");
+    ck.equal(models.size(), size_t(21), "every model built");
     return ck.finish();
 }

@@ -18,15 +18,21 @@
 //! with caps three creases meet there.
 //!
 //! *Meridian caps* (`"caps": "flat"`; both ends then have a sector). Each meridian plane is
-//! closed by a structured grid of `(R − 1) × k` quads (`R` rings) with sides: the bottom
-//! sector's radial line (`k` intervals, apex to ring), the ring column (`R − 1`), the top
-//! sector's radial line (`k`) and the axis (`R − 1` intervals, vertices shared by both caps).
-//! The axis vertices sit at the heights of the ring column when those rise strictly (rows
-//! are then horizontal); otherwise at a blend of the column's running-maximum height and a
-//! small share (2%, or if that folds 10%, 30%, 100%) of its chord-length fraction, which
-//! keeps them strictly rising and the rows nearly horizontal (a flat foot or a flat top, say).
-//! Interior vertices come from Coons interpolation in the `(r, z)` plane. A layout that
-//! would fold (a profile that does not face the axis, like a hollow glass) is refused.
+//! closed by one structured grid. Its boundary is the bottom sector's radial line (`k`
+//! intervals, apex to ring), the ring column (`R − 1` intervals for `R` rings), the top
+//! sector's radial line (`k`) and the axis (vertices shared by both caps). The grid's four
+//! corners are the two apexes and the column vertices `a` steps from either end, so its sides
+//! are: the bottom radial line and `a` column steps, the column's middle (`R − 1 − 2a`), the
+//! top radial line and `a` column steps, and the axis with as many intervals as the column's
+//! middle. `a = 0` (rows from the axis to the profile, `k` quads across) is tried first; larger
+//! `a` bend the grid around the column's ends, which fits thin walls such as a cup's. The
+//! axis vertices sit at the heights of the column's middle when those rise strictly (rows are then
+//! horizontal); otherwise at a blend of their running-maximum height and a small share (2%,
+//! then 10%, 30%, 100%) of its chord-length fraction, which keeps them strictly rising and the
+//! rows nearly horizontal (a flat foot or a flat top, say). Interior vertices come from Coons
+//! interpolation in the `(r, z)` plane; the first layout that does not fold is taken, and a
+//! profile for which none exists (a hollow glass whose bowl and foot both reach the axis) is
+//! refused.
 //!
 //! Every edge where a flat cap meets the side or another cap is an infinitely sharp crease,
 //! and every vertex where three or more creases meet an infinitely sharp corner. A cap's
@@ -239,102 +245,79 @@ impl Wedge {
         }
     }
 
-    /// Close the meridian plane at `theta` with a flat grid between `column` (the rings'
-    /// vertices there, bottom to top), the sectors' radial lines `bottom` and `top` (apex to
-    /// ring) and the `axis` (bottom apex to top apex; interior ids created on first use).
+    /// Close the meridian plane at `theta` with a flat structured grid whose boundary is the
+    /// sectors' radial line `bottom` (apex to ring), the ring `column` (bottom to top), the
+    /// radial line `top` (apex to ring) and the axis. The first call chooses the split `a` and
+    /// creates the axis vertices (`shared`); the second reuses both.
     fn meridian_cap(
         &mut self,
         theta: f64,
         column: &[u32],
         bottom: &[u32],
         top: &[u32],
-        axis: &mut Vec<u32>,
+        shared: &mut Option<(usize, Vec<u32>)>,
     ) -> Result<()> {
         let rz = |w: &Wedge, v: u32| {
             let p = w.parts.positions[v as usize];
             DVec2::new(p.truncate().length(), p.z)
         };
-        let rows = column.len() - 1;
-        let col: Vec<DVec2> = column.iter().map(|&v| rz(self, v)).collect();
-        let (z0, z1) = (rz(self, bottom[0]).y, rz(self, top[0]).y);
+        let plane = MeridianPlane {
+            column: column.iter().map(|&v| rz(self, v)).collect(),
+            bottom: bottom.iter().map(|&v| rz(self, v)).collect(),
+            top: top.iter().map(|&v| rz(self, v)).collect(),
+        };
+        let (z0, z1) = (plane.bottom[0].y, plane.top[0].y);
         if z0 == z1 {
             return Err(Error::invalid_argument(format!(
                 "caps: the profile's ends lie at one height z = {z0}; the flat caps on the \
                  meridian planes need an axis segment between them"
             )));
         }
-        let rising = (z1 - z0).signum();
-        let monotone = col.windows(2).all(|w| (w[1].y - w[0].y) * rising > 0.0)
-            && (col[1].y - z0) * rising > 0.0
-            && (z1 - col[rows - 1].y) * rising > 0.0;
-        // Height fraction of each column vertex (its running maximum, so never falling) and
-        // chord-length fraction; a strictly rising column uses the heights alone.
-        let mut height = Vec::with_capacity(rows + 1);
-        let mut chord = vec![0.0];
-        for (i, c) in col.iter().enumerate() {
-            let h = ((c.y - z0) / (z1 - z0)).clamp(0.0, 1.0);
-            height.push(if i == 0 { h } else { h.max(height[i - 1]) });
-            if i > 0 {
-                chord.push(chord[i - 1] + (col[i] - col[i - 1]).length());
+        let (a, grid) = match shared {
+            Some((a, axis)) => {
+                let u = axis
+                    .iter()
+                    .map(|&v| (self.parts.positions[v as usize].z - z0) / (z1 - z0))
+                    .collect();
+                (*a, plane.grid(*a, u)?)
             }
-        }
-        let bot: Vec<DVec2> = bottom.iter().map(|&v| rz(self, v)).collect();
-        let tp: Vec<DVec2> = top.iter().map(|&v| rz(self, v)).collect();
-        let k = bottom.len() - 1;
-        let layout = |u: Vec<f64>| {
-            let left: Vec<DVec2> = u
-                .iter()
-                .map(|&f| DVec2::new(0.0, z0 + f * (z1 - z0)))
-                .collect();
-            let grid = coons(&left, &col, &bot, &tp, &u, &uniform(k));
-            check_unfolded(&grid).map(|()| (left, grid))
-        };
-        let grid = if axis.is_empty() {
-            // The first cap chooses the axis spacing.
-            let blend = |mix: f64| -> Vec<f64> {
-                (0..=rows)
-                    .map(|i| match i {
-                        0 => 0.0,
-                        i if i == rows => 1.0,
-                        i => (1.0 - mix) * height[i] + mix * chord[i] / chord[rows],
+            None => {
+                let (a, grid) = plane.choose()?;
+                let axis: Vec<u32> = grid[0]
+                    .iter()
+                    .enumerate()
+                    .map(|(j, p)| match j {
+                        0 => bottom[0],
+                        j if j == grid[0].len() - 1 => top[0],
+                        _ => self.add_vertex(DVec3::new(0.0, 0.0, p.y)),
                     })
-                    .collect()
-            };
-            let mixes: &[f64] = if monotone { &[0.0] } else { &CHORD_SHARES };
-            let mut found = layout(blend(mixes[0]));
-            for &mix in &mixes[1..] {
-                if found.is_ok() {
-                    break;
-                }
-                found = layout(blend(mix));
+                    .collect();
+                *shared = Some((a, axis));
+                (a, grid)
             }
-            let (left, grid) = found?;
-            axis.push(bottom[0]);
-            for p in &left[1..rows] {
-                let id = self.add_vertex(DVec3::new(0.0, 0.0, p.y));
-                axis.push(id);
-            }
-            axis.push(top[0]);
-            grid
-        } else {
-            // The second one shares the axis.
-            let u = axis
-                .iter()
-                .map(|&v| (self.parts.positions[v as usize].z - z0) / (z1 - z0))
-                .collect();
-            layout(u)?.1
         };
-        let mut ids = vec![vec![0u32; k + 1]; rows + 1];
-        for i in 0..=rows {
-            for j in 0..=k {
-                ids[i][j] = if i == 0 {
-                    bottom[j]
-                } else if i == rows {
-                    top[j]
-                } else if j == 0 {
-                    axis[i]
-                } else if j == k {
-                    column[i]
+        let axis = &shared.as_ref().expect("set above").1;
+        let (n1, n2) = (grid.len() - 1, grid[0].len() - 1);
+        let (k, rows) = (bottom.len() - 1, column.len() - 1);
+        let mut ids = vec![vec![0u32; n2 + 1]; n1 + 1];
+        for (i, row) in ids.iter_mut().enumerate() {
+            for (j, id) in row.iter_mut().enumerate() {
+                *id = if j == 0 {
+                    if i <= k {
+                        bottom[i]
+                    } else {
+                        column[i - k]
+                    }
+                } else if j == n2 {
+                    if i <= k {
+                        top[i]
+                    } else {
+                        column[rows - (i - k)]
+                    }
+                } else if i == 0 {
+                    axis[j]
+                } else if i == n1 {
+                    column[a + j]
                 } else {
                     self.add_vertex(revolve_point(grid[i][j], theta))
                 };
@@ -371,6 +354,97 @@ impl Wedge {
     }
 }
 
+/// A meridian cap's boundary in the `(r, z)` plane: the bottom sector's radial line (apex to
+/// ring), the ring column (bottom to top) and the top sector's radial line (apex to ring).
+struct MeridianPlane {
+    bottom: Vec<DVec2>,
+    column: Vec<DVec2>,
+    top: Vec<DVec2>,
+}
+
+impl MeridianPlane {
+    /// The first unfolded layout: split `a = 0, 1, ...`, and for each the axis spacing of
+    /// [`MeridianPlane::axis_spacings`].
+    fn choose(&self) -> Result<(usize, Vec<Vec<DVec2>>)> {
+        let rows = self.column.len() - 1;
+        let mut first_error = None;
+        for a in 0..=(rows - 1) / 2 {
+            for u in self.axis_spacings(a) {
+                match self.grid(a, u) {
+                    Ok(grid) => return Ok((a, grid)),
+                    Err(e) => {
+                        first_error.get_or_insert(e);
+                    }
+                }
+            }
+        }
+        Err(first_error.expect("at least one layout is tried"))
+    }
+
+    /// Candidate axis spacings (fractions from the bottom apex to the top apex) for split
+    /// `a`, whose axis faces the column's middle part `column[a..=rows - a]`: its heights if
+    /// they rise strictly, else blends of their running maximum with a growing share of the
+    /// chord-length fraction ([`CHORD_SHARES`]).
+    fn axis_spacings(&self, a: usize) -> Vec<Vec<f64>> {
+        let (z0, z1) = (self.bottom[0].y, self.top[0].y);
+        let mid = &self.column[a..self.column.len() - a];
+        let n = mid.len() - 1;
+        let rises = |p: f64, q: f64| (q - p) * (z1 - z0) > 0.0;
+        let monotone = mid.windows(2).all(|w| rises(w[0].y, w[1].y))
+            && (n < 2 || (rises(z0, mid[1].y) && rises(mid[n - 1].y, z1)));
+        let mut height = Vec::with_capacity(n + 1);
+        let mut chord = vec![0.0];
+        for (i, c) in mid.iter().enumerate() {
+            let h = ((c.y - z0) / (z1 - z0)).clamp(0.0, 1.0);
+            height.push(if i == 0 { h } else { h.max(height[i - 1]) });
+            if i > 0 {
+                chord.push(chord[i - 1] + (mid[i] - mid[i - 1]).length());
+            }
+        }
+        let blend = |mix: f64| -> Vec<f64> {
+            (0..=n)
+                .map(|j| match j {
+                    0 => 0.0,
+                    j if j == n => 1.0,
+                    j => (1.0 - mix) * height[j] + mix * chord[j] / chord[n],
+                })
+                .collect()
+        };
+        let mixes: &[f64] = if monotone { &[0.0] } else { &CHORD_SHARES };
+        mixes.iter().map(|&m| blend(m)).collect()
+    }
+
+    /// The grid `x[i][j]` of split `a` with axis fractions `u` (`rows − 2a + 1` values):
+    /// `x[i][0]` runs from the bottom apex along the bottom radial line and up the column to
+    /// `column[a]`, `x[i][n2]` from the top apex along the top radial line and down the column
+    /// to `column[rows − a]`, `x[0][j]` up the axis, `x[n1][j]` along `column[a..=rows − a]`.
+    /// Errors if it folds.
+    fn grid(&self, a: usize, u: Vec<f64>) -> Result<Vec<Vec<DVec2>>> {
+        let (k, rows) = (self.bottom.len() - 1, self.column.len() - 1);
+        let (z0, z1) = (self.bottom[0].y, self.top[0].y);
+        let side = |radial: &[DVec2], down: bool| -> Vec<DVec2> {
+            let mut s = radial.to_vec();
+            s.extend((1..=a).map(|i| self.column[if down { rows - i } else { i }]));
+            s
+        };
+        let axis: Vec<DVec2> = u
+            .iter()
+            .map(|&f| DVec2::new(0.0, z0 + f * (z1 - z0)))
+            .collect();
+        let mid = &self.column[a..=rows - a];
+        let grid = coons(
+            &side(&self.bottom, false),
+            &side(&self.top, true),
+            &axis,
+            mid,
+            &uniform(k + a),
+            &u,
+        );
+        check_unfolded(&grid)?;
+        Ok(grid)
+    }
+}
+
 /// Error if a quad of the meridian cap grid folds: its signed area has the wrong sign, or
 /// more than one of its corners turns the wrong way (a bow tie).
 fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
@@ -400,8 +474,9 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
             if area(&q) * total <= 0.0 || wrong > 1 {
                 return Err(Error::invalid_argument(format!(
                     "caps: the flat cap between the profile and the axis would fold near \
-                     (r, z) = ({:.6}, {:.6}); its structured layout needs a profile whose \
-                     region down to the axis is roughly star-shaped (not a hollow shell)",
+                     (r, z) = ({:.6}, {:.6}) in every structured layout tried; the region \
+                     between the profile and the axis must be a simple strip that rows from \
+                     the axis can fill (a hollow shell reaching the axis twice is not)",
                     q[0].x, q[0].y
                 )));
             }
@@ -465,11 +540,11 @@ pub fn wedge_parts(
         sectors.push(sector);
     }
     if capped {
-        let mut axis = Vec::new();
+        let mut shared = None;
         for (side, theta) in [(0, 0.0), (1, angle)] {
             let column: Vec<u32> = (0..rows).map(|i| ring_ids(i)[side * (cols - 1)]).collect();
             let (bottom, top) = (&sectors[0].radials[side], &sectors[1].radials[side]);
-            w.meridian_cap(theta, &column, bottom, top, &mut axis)?;
+            w.meridian_cap(theta, &column, bottom, top, &mut shared)?;
         }
     }
     Ok(w.finish(&tips))

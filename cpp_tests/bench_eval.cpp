@@ -16,6 +16,7 @@
 //     in a forked child; peak resident memory above the child's start).
 
 #include "capi_mesh.h"
+#include "far_points.h"
 #include "osd_shape.h"
 #include "random_points.h"
 #include "test_support.h"
@@ -27,7 +28,6 @@
 #include <opensubdiv/far/patchMap.h>
 #include <opensubdiv/far/patchTable.h>
 #include <opensubdiv/far/patchTableFactory.h>
-#include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
 #include <sys/resource.h>
@@ -36,6 +36,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 
@@ -43,16 +44,6 @@ using namespace OpenSubdiv;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-struct Pt {
-    double p[3];
-    void Clear() { p[0] = p[1] = p[2] = 0; }
-    void AddWithWeight(Pt const &s, double w) {
-        p[0] += w * s.p[0];
-        p[1] += w * s.p[1];
-        p[2] += w * s.p[2];
-    }
-};
 
 double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
 
@@ -106,11 +97,7 @@ profsubd_test::OsdShape refine_once(const profsubd_test::OsdShape &s) {
     Far::TopologyRefiner::UniformOptions uo(1);
     uo.fullTopologyInLastLevel = true;
     refiner->RefineUniform(uo);
-    std::vector<Pt> pts(refiner->GetNumVerticesTotal());
-    for (int v = 0; v < s.num_vertices(); ++v)
-        for (int k = 0; k < 3; ++k) pts[v].p[k] = s.positions[3 * v + k];
-    Pt *src = pts.data(), *dst = pts.data() + s.num_vertices();
-    Far::PrimvarRefinerReal<double>(*refiner).Interpolate(1, src, dst);
+    std::vector<profsubd_test::FarPoint> pts = profsubd_test::refine_points(*refiner, s.positions);
     const Far::TopologyLevel &l = refiner->GetLevel(1);
     profsubd_test::OsdShape out;
     out.options = s.options;
@@ -210,16 +197,7 @@ int main(int argc, char **argv) {
     auto run_far = [&] {
         auto r = profsubd_test::build_refiner(shape);
         r->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
-        std::vector<Pt> pts(r->GetNumVerticesTotal());
-        for (int v = 0; v < shape.num_vertices(); ++v)
-            for (int k = 0; k < 3; ++k) pts[v].p[k] = shape.positions[3 * v + k];
-        Far::PrimvarRefinerReal<double> pr(*r);
-        Pt *src = pts.data();
-        for (int lev = 1; lev <= level; ++lev) {
-            Pt *dst = src + r->GetLevel(lev - 1).GetNumVertices();
-            pr.Interpolate(lev, src, dst);
-            src = dst;
-        }
+        std::vector<profsubd_test::FarPoint> pts = profsubd_test::refine_points(*r, shape.positions);
         checksum += pts.back().p[0];
         far_counts[0] = r->GetLevel(level).GetNumVertices();
         far_counts[1] = r->GetLevel(level).GetNumFaces();
@@ -306,7 +284,7 @@ int main(int argc, char **argv) {
     std::unique_ptr<Far::TopologyRefiner> adaptive;
     std::unique_ptr<Far::PatchTable> table;
     std::unique_ptr<Far::PatchMap> pmap;
-    std::vector<Pt> pp;
+    std::vector<profsubd_test::FarPoint> pp;
     double t_build_far = best(3, [&] {
         adaptive = profsubd_test::build_refiner(shape);
         Far::PatchTableFactory::Options po;
@@ -315,16 +293,7 @@ int main(int argc, char **argv) {
         table.reset(Far::PatchTableFactory::Create(*adaptive, po));
         pmap.reset(new Far::PatchMap(*table));
         int nref = adaptive->GetNumVerticesTotal();
-        pp.assign(nref + table->GetNumLocalPoints(), Pt());
-        for (int v = 0; v < shape.num_vertices(); ++v)
-            for (int k = 0; k < 3; ++k) pp[v].p[k] = shape.positions[3 * v + k];
-        Far::PrimvarRefinerReal<double> pr(*adaptive);
-        Pt *src = pp.data();
-        for (int lev = 1; lev <= adaptive->GetMaxLevel(); ++lev) {
-            Pt *dst = src + adaptive->GetLevel(lev - 1).GetNumVertices();
-            pr.Interpolate(lev, src, dst);
-            src = dst;
-        }
+        pp = profsubd_test::refine_points(*adaptive, shape.positions, table->GetNumLocalPoints());
         if (table->GetNumLocalPoints() > 0) table->ComputeLocalPointValues(pp.data(), pp.data() + nref);
     });
     double t_eval_far = best(3, [&] {

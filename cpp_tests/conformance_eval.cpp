@@ -33,6 +33,7 @@
 // (a valence-360 vertex, slow to refine) under its own tags only.
 
 #include "capi_mesh.h"
+#include "far_points.h"
 #include "osd_shape.h"
 #include "random_mesh.h"
 #include "random_points.h"
@@ -45,7 +46,6 @@
 #include <opensubdiv/far/patchMap.h>
 #include <opensubdiv/far/patchTable.h>
 #include <opensubdiv/far/patchTableFactory.h>
-#include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/ptexIndices.h>
 
 #include <algorithm>
@@ -74,16 +74,7 @@ std::string str(V3 a) {
     return b;
 }
 
-// Far's primvar type for double positions.
-struct Pt {
-    double p[3];
-    void Clear() { p[0] = p[1] = p[2] = 0; }
-    void AddWithWeight(Pt const &s, double w) {
-        p[0] += w * s.p[0];
-        p[1] += w * s.p[1];
-        p[2] += w * s.p[2];
-    }
-};
+using Pt = profsubd_test::FarPoint;
 
 struct Sample {
     V3 p, du, dv;
@@ -306,16 +297,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
         pmap.reset(new Far::PatchMap(*table));
         int nref = adaptive->GetNumVerticesTotal();
         int nloc = table->GetNumLocalPoints();
-        patch_points.resize(nref + nloc);
-        for (int v = 0; v < base.GetNumVertices(); ++v)
-            for (int k = 0; k < 3; ++k) patch_points[v].p[k] = shape.positions[3 * v + k];
-        Far::PrimvarRefinerReal<double> pr(*adaptive);
-        Pt *src = patch_points.data();
-        for (int lev = 1; lev <= adaptive->GetMaxLevel(); ++lev) {
-            Pt *dst = src + adaptive->GetLevel(lev - 1).GetNumVertices();
-            pr.Interpolate(lev, src, dst);
-            src = dst;
-        }
+        patch_points = profsubd_test::refine_points(*adaptive, shape.positions, nloc);
         if (nloc > 0) table->ComputeLocalPointValues(patch_points.data(), patch_points.data() + nref);
     }
 
@@ -468,18 +450,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
     Far::TopologyRefiner::UniformOptions uo(level);
     uo.fullTopologyInLastLevel = true;  // vertex-face and vertex-edge relations at the last level
     uniform->RefineUniform(uo);
-    std::vector<Pt> rp(uniform->GetNumVerticesTotal());
-    for (int v = 0; v < base.GetNumVertices(); ++v)
-        for (int k = 0; k < 3; ++k) rp[v].p[k] = shape.positions[3 * v + k];
-    {
-        Far::PrimvarRefinerReal<double> pr(*uniform);
-        Pt *src = rp.data();
-        for (int lev = 1; lev <= level; ++lev) {
-            Pt *dst = src + uniform->GetLevel(lev - 1).GetNumVertices();
-            pr.Interpolate(lev, src, dst);
-            src = dst;
-        }
-    }
+    std::vector<Pt> rp = profsubd_test::refine_points(*uniform, shape.positions);
     int last_offset = (int)rp.size() - uniform->GetLevel(level).GetNumVertices();
     std::vector<Pt> last(rp.begin() + last_offset, rp.end());
     const Far::TopologyLevel &fine = uniform->GetLevel(level);

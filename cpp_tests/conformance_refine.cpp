@@ -12,10 +12,10 @@
 //
 // Prints the largest deviation found, relative to the diagonal.
 #include "capi_mesh.h"
+#include "far_points.h"
 #include "osd_shape.h"
 #include "test_support.h"
 
-#include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyRefiner.h>
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
@@ -41,16 +41,6 @@ using profsubd_test::OsdShape;
 namespace {
 
 constexpr double kTolerance = 1e-12;  // x bounding-box diagonal
-
-struct Vertex {
-    double p[3];
-    void Clear() { p[0] = p[1] = p[2] = 0.0; }
-    void AddWithWeight(const Vertex &src, double w) {
-        p[0] += src.p[0] * w;
-        p[1] += src.p[1] * w;
-        p[2] += src.p[2] * w;
-    }
-};
 
 double diagonal(const std::vector<double> &pos) {
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
@@ -146,18 +136,9 @@ bool compare_with_far(Checker &c, Stats &stats, const std::string &name, const O
     uo.fullTopologyInLastLevel = true;
     uo.orderVerticesFromFacesFirst = faces_first;
     refiner->RefineUniform(uo);
-    std::vector<Vertex> buf(refiner->GetNumVerticesTotal());
-    for (int i = 0; i < s.num_vertices(); ++i) {
-        for (int k = 0; k < 3; ++k) buf[i].p[k] = s.positions[3 * i + k];
-    }
-    Vertex *src = buf.data();
-    Far::PrimvarRefinerReal<double> primvar(*refiner);
-    for (int l = 1; l <= level; ++l) {
-        Vertex *dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-        primvar.Interpolate(l, src, dst);
-        src = dst;
-    }
+    const std::vector<profsubd_test::FarPoint> buf = profsubd_test::refine_points(*refiner, s.positions);
     const Far::TopologyLevel &far = refiner->GetLevel(level);
+    const profsubd_test::FarPoint *src = buf.data() + buf.size() - far.GetNumVertices();  // the last level
 
     profsubd_test::MeshPtr mine = refine_profsubd(c, s, o, static_cast<uint32_t>(level), faces_first);
     if (!mine) return false;

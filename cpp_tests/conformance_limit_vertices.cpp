@@ -19,6 +19,7 @@
 // printed, not hidden.
 
 #include "capi_mesh.h"
+#include "far_points.h"
 #include "osd_shape.h"
 #include "random_mesh.h"
 #include "test_support.h"
@@ -133,16 +134,7 @@ std::string psd_limits(const OsdShape &shape, PsdLimits *out) {
 // ---------------------------------------------------------------------------------------
 // The exact reference from Far: local refinement, then the one-ring eigenvector.
 
-// Primvar of 3 doubles.
-struct Pt {
-    double v[3];
-    void Clear() { v[0] = v[1] = v[2] = 0.0; }
-    void AddWithWeight(const Pt &s, double w) {
-        v[0] += w * s.v[0];
-        v[1] += w * s.v[1];
-        v[2] += w * s.v[2];
-    }
-};
+using Pt = profsubd_test::FarPoint;
 
 // Primvar of weights on the vertices of a one-ring.
 struct Stencil {
@@ -333,7 +325,7 @@ bool reference_limit(const Far::TopologyRefiner &base, const std::vector<double>
             for (size_t j = 0; j < m; ++j) sum += s[j];
             Vec3 p = {0.0, 0.0, 0.0};
             for (size_t j = 0; j < m; ++j) {
-                for (int c = 0; c < 3; ++c) p[c] += s[j] / sum * ring_pts[j].v[c];
+                for (int c = 0; c < 3; ++c) p[c] += s[j] / sum * ring_pts[j].p[c];
             }
             *out = p;
             return true;

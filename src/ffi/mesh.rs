@@ -458,18 +458,7 @@ pub(crate) mod tests {
 
     /// The unit square as a one-quad mesh.
     pub(crate) fn quad_mesh() -> Mesh {
-        Mesh::from_parts(MeshParts {
-            positions: vec![
-                DVec3::new(0.0, 0.0, 0.0),
-                DVec3::new(1.0, 0.0, 0.0),
-                DVec3::new(1.0, 1.0, 0.0),
-                DVec3::new(0.0, 1.0, 0.0),
-            ],
-            face_sizes: vec![4],
-            face_indices: vec![0, 1, 2, 3],
-            ..Default::default()
-        })
-        .unwrap()
+        Mesh::from_parts(crate::mesh::tests::quad()).unwrap()
     }
 
     /// Two quads sharing edge 1-4, with a crease on it, a corner and a hole.

@@ -287,10 +287,11 @@ fn check_creases(parts: &MeshParts, face_offsets: &[u32]) -> Result<()> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn quad() -> MeshParts {
+    /// The unit square as one quad without tags: the fixture unit tests share.
+    pub(crate) fn quad() -> MeshParts {
         MeshParts {
             positions: vec![
                 DVec3::new(0.0, 0.0, 0.0),

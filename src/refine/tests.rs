@@ -32,18 +32,7 @@ fn cube(creases: Vec<Crease>) -> Mesh {
 }
 
 fn quad() -> Mesh {
-    Mesh::from_parts(MeshParts {
-        positions: vec![
-            DVec3::new(0.0, 0.0, 0.0),
-            DVec3::new(1.0, 0.0, 0.0),
-            DVec3::new(1.0, 1.0, 0.0),
-            DVec3::new(0.0, 1.0, 0.0),
-        ],
-        face_sizes: vec![4],
-        face_indices: vec![0, 1, 2, 3],
-        ..Default::default()
-    })
-    .unwrap()
+    Mesh::from_parts(crate::mesh::tests::quad()).unwrap()
 }
 
 fn close(a: DVec3, b: DVec3) -> bool {

@@ -92,9 +92,11 @@ pub enum Command {
     ///
     /// Reads the profile from JSON (bottom to top, r >= 0; angle_deg, samples_profile,
     /// samples_around, interpolation, sharp_angle_deg, corners, crease_sharpness, boundary,
-    /// crease_method), closes ends on the axis with quad
+    /// crease_method, caps), closes ends on the axis with quad
     /// caps (smooth) or a corner tip (pointed), creases rings at profile corners, and fits
     /// the control points so that the exact limit surface passes through every data point.
+    /// "caps": "flat" closes the solid with flat caps (ends off the axis; a partial turn's
+    /// start and end meridian planes).
     Revolve(revolve::RevolveArgs),
     /// Sweep a planar profile along a 3-D trajectory with a fixed, Frenet or
     /// rotation-minimizing frame.

@@ -25,11 +25,11 @@
 //! are: the bottom radial line and `a` column steps, the column's middle (`R − 1 − 2a`), the
 //! top radial line and `a` column steps, and the axis with as many intervals as the column's
 //! middle. `a = 0` (rows from the axis to the profile, `k` quads across) is tried first; larger
-//! `a` bend the grid around the column's ends, which fits thin walls such as a cup's. The
-//! axis vertices sit at the heights of the column's middle when those rise strictly (rows are then
-//! horizontal); otherwise at a blend of their running-maximum height and a small share (2%,
-//! then 10%, 30%, 100%) of its chord-length fraction, which keeps them strictly rising and the
-//! rows nearly horizontal (a flat foot or a flat top, say). Interior vertices come from Coons
+//! `a` (up to 32 values) bend the grid around the column's ends, which fits thin walls such
+//! as a cup's. The axis vertices sit at the heights of the column's middle when those rise
+//! strictly (rows are then horizontal); otherwise at a blend of their running-maximum height
+//! and a small share (2%, then 10%, 30%, 100%) of its chord-length fraction, which keeps them
+//! strictly rising and the rows nearly horizontal (a flat foot or a flat top, say). Interior vertices come from Coons
 //! interpolation in the `(r, z)` plane; the first layout that does not fold is taken, and a
 //! profile for which none exists (a hollow glass whose bowl and foot both reach the axis) is
 //! refused.
@@ -54,6 +54,9 @@ use crate::mesh::{Corner, Crease, MeshParts, SHARPNESS_INFINITE};
 /// Shares of the chord-length fraction tried, in turn, in the axis spacing of a meridian cap
 /// whose ring column does not rise strictly (the rest follows its heights).
 const CHORD_SHARES: [f64; 4] = [0.02, 0.1, 0.3, 1.0];
+
+/// Most splits of the meridian cap layout tried beyond `a = 0`.
+const MAX_SPLITS: usize = 32;
 
 /// A sector closing one end ring: its apex and its two radial lines.
 struct Sector {
@@ -363,12 +366,19 @@ struct MeridianPlane {
 }
 
 impl MeridianPlane {
-    /// The first unfolded layout: split `a = 0, 1, ...`, and for each the axis spacing of
+    /// The first unfolded layout: split `a = 0, 1, ...` (at most [`MAX_SPLITS`] values,
+    /// evenly spread, so that a refusal stays cheap), and for each the axis spacings of
     /// [`MeridianPlane::axis_spacings`].
     fn choose(&self) -> Result<(usize, Vec<Vec<DVec2>>)> {
         let rows = self.column.len() - 1;
+        let last = (rows - 1) / 2;
+        let splits: Vec<usize> = if last < MAX_SPLITS {
+            (0..=last).collect()
+        } else {
+            (0..=MAX_SPLITS).map(|t| t * last / MAX_SPLITS).collect()
+        };
         let mut first_error = None;
-        for a in 0..=(rows - 1) / 2 {
+        for a in splits {
             for u in self.axis_spacings(a) {
                 match self.grid(a, u) {
                     Ok(grid) => return Ok((a, grid)),

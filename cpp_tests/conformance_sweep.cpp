@@ -236,12 +236,43 @@ int main() {
     profsubd_options_set_sweep_samples(raw_options, 24, 8);
     profsubd_options_set_revolve_angle(raw_options, 180.0);
     profsubd_swept *cup_result = nullptr;
-    profsubd_status cup_status = profsubd_revolve(cup.data(), cup.size() / 2, raw_options, &cup_result);
+    profsubd_status cup_status =
+        profsubd_revolve(cup.data(), cup.size() / 2, raw_options, &cup_result);
     Model cup_model;
     if (take_result(ck, "capped cup (polyline)", cup_status, cup_result, &cup_model)) {
         models.push_back(std::move(cup_model));
     }
     profsubd_options_set_interpolation(raw_options, 0);
+    // A capped 270-degree vase with a semi-sharp crease ring (2.0) ending at corner-tagged
+    // vertices on the infinitely sharp cap creases, under edge-only and uniform or Chaikin.
+    const std::vector<double> vase = {1.0, 0.0, 1.4, 0.8, 1.3, 2.0, 0.9, 3.0, 0.9, 3.6};
+    const uint32_t vase_corner = 2;
+    profsubd_options_set_sweep_samples(raw_options, 8, 16);
+    profsubd_options_set_revolve_angle(raw_options, 270.0);
+    profsubd_options_set_sharp_angle(raw_options, 60.0);
+    profsubd_options_set_sweep_corners(raw_options, &vase_corner, 1, nullptr, 0);
+    profsubd_options_set_crease_sharpness(raw_options, 2.0f);
+    profsubd_options_set_boundary(raw_options, PROFSUBD_BOUNDARY_EDGE_ONLY);
+    for (int chaikin = 0; chaikin < 2; ++chaikin) {
+        profsubd_options_set_crease_method(raw_options,
+                                           chaikin ? PROFSUBD_CREASE_CHAIKIN : PROFSUBD_CREASE_UNIFORM);
+        profsubd_swept *vase_result = nullptr;
+        profsubd_status vase_status =
+            profsubd_revolve(vase.data(), vase.size() / 2, raw_options, &vase_result);
+        Model vase_model;
+        std::string name = std::string("capped vase, semi-sharp 2, edge-only, ") +
+                           (chaikin ? "chaikin" : "uniform");
+        if (with_options(ck, name, Sdc::Options::VTX_BOUNDARY_EDGE_ONLY,
+                         chaikin ? Sdc::Options::CREASE_CHAIKIN : Sdc::Options::CREASE_UNIFORM,
+                         vase_status, vase_result, &vase_model)) {
+            models.push_back(std::move(vase_model));
+        }
+    }
+    profsubd_options_set_sharp_angle(raw_options, 30.0);
+    profsubd_options_set_sweep_corners(raw_options, nullptr, 0, nullptr, 0);
+    profsubd_options_set_crease_sharpness(raw_options, 10.0f);
+    profsubd_options_set_boundary(raw_options, PROFSUBD_BOUNDARY_EDGE_AND_CORNER);
+    profsubd_options_set_crease_method(raw_options, PROFSUBD_CREASE_UNIFORM);
     profsubd_options_set_caps(raw_options, PROFSUBD_CAPS_OPEN);
     profsubd_options_set_revolve_angle(raw_options, 360.0);
     // Sweeps: a torus (circle along a circle), a square tube along a closed wavy curve (four
@@ -337,6 +368,6 @@ int main() {
         check_model(ck, m);
     }
     ck.set_context("");
-    ck.equal(models.size(), size_t(21), "every model built");
+    ck.equal(models.size(), size_t(23), "every model built");
     return ck.finish();
 }

@@ -221,31 +221,32 @@ fn build_faces(parent: &Level, r: &Refinement, with_edges: bool) -> FaceArrays {
     let offsets: Vec<u32> = (0..=nfv as u32).map(|i| 4 * i).collect();
     let mut verts = vec![0u32; 4 * nfv];
     let mut edges = vec![0u32; if with_edges { 4 * nfv } else { 0 }];
-    let mut holes = Vec::with_capacity(nfv);
+    let mut holes = vec![false; nfv];
+    let (first_v, first_f, first_e) = (
+        r.vertex_child_vertex(0),
+        r.face_child_vertex(0),
+        r.edge_child_vertex(0),
+    );
     for f in 0..parent.num_faces() {
         let fv = parent.face_vertices(f);
         let fe = parent.face_edges(f);
         let n = fv.len();
         let base = parent.face_offset(f);
-        let face_point = r.face_child_vertex(f);
-        for j in 0..n {
+        if parent.is_face_hole(f) {
+            holes[base..base + n].fill(true);
+        }
+        let face_point = first_f + f as u32;
+        let children = &mut verts[4 * base..4 * (base + n)];
+        for (j, quad) in children.chunks_exact_mut(4).enumerate() {
             let j_prev = if j > 0 { j - 1 } else { n - 1 };
-            let c = 4 * (base + j);
             // Order within the child quad: for a parent quad, rotated so that the corner
-            // vertex keeps its position j; otherwise corner first.
-            let slots = if n == 4 {
-                let j_opp = if j_prev > 0 { j_prev - 1 } else { 3 };
-                let j_next = if j_opp > 0 { j_opp - 1 } else { 3 };
-                [j, j_next, j_opp, j_prev]
-            } else {
-                [0, 1, 2, 3]
-            };
-            verts[c + slots[0]] = r.vertex_child_vertex(fv[j] as usize);
-            verts[c + slots[1]] = r.edge_child_vertex(fe[j] as usize);
-            verts[c + slots[2]] = face_point;
-            verts[c + slots[3]] = r.edge_child_vertex(fe[j_prev] as usize);
-
-            holes.push(parent.is_face_hole(f));
+            // vertex keeps its position j (slot k holds (j + k) mod 4); otherwise corner
+            // first.
+            let rot = if n == 4 { j } else { 0 };
+            quad[rot] = first_v + fv[j];
+            quad[(rot + 1) & 3] = first_e + fe[j];
+            quad[(rot + 2) & 3] = face_point;
+            quad[(rot + 3) & 3] = first_e + fe[j_prev];
             if !with_edges {
                 continue;
             }
@@ -262,10 +263,11 @@ fn build_faces(parent: &Level, r: &Refinement, with_edges: bool) -> FaceArrays {
             } else {
                 0
             };
-            edges[c + slots[0]] = r.edge_child_edge(fe[j] as usize, corner_in_next);
-            edges[c + slots[1]] = (base + j) as u32;
-            edges[c + slots[2]] = (base + j_prev) as u32;
-            edges[c + slots[3]] = r.edge_child_edge(fe[j_prev] as usize, corner_in_prev);
+            let c = 4 * (base + j);
+            edges[c + rot] = r.edge_child_edge(fe[j] as usize, corner_in_next);
+            edges[c + ((rot + 1) & 3)] = (base + j) as u32;
+            edges[c + ((rot + 2) & 3)] = (base + j_prev) as u32;
+            edges[c + ((rot + 3) & 3)] = r.edge_child_edge(fe[j_prev] as usize, corner_in_prev);
         }
     }
     (offsets, verts, edges, holes)

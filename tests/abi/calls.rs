@@ -154,42 +154,19 @@ fn main() {
         );
         assert_eq!(last_error(), "");
         let mut n = 0usize;
-        check(
-            profsubd_mesh_num_vertices(mesh, &mut n),
-            PROFSUBD_OK,
-            "num_vertices",
-        );
-        assert_eq!(n, 6);
-        check(
-            profsubd_mesh_num_faces(mesh, &mut n),
-            PROFSUBD_OK,
-            "num_faces",
-        );
-        assert_eq!(n, 2);
-        check(
-            profsubd_mesh_num_face_indices(mesh, &mut n),
-            PROFSUBD_OK,
-            "num_face_indices",
-        );
-        assert_eq!(n, 8);
-        check(
-            profsubd_mesh_num_creases(mesh, &mut n),
-            PROFSUBD_OK,
-            "num_creases",
-        );
-        assert_eq!(n, 1);
-        check(
-            profsubd_mesh_num_corners(mesh, &mut n),
-            PROFSUBD_OK,
-            "num_corners",
-        );
-        assert_eq!(n, 1);
-        check(
-            profsubd_mesh_num_holes(mesh, &mut n),
-            PROFSUBD_OK,
-            "num_holes",
-        );
-        assert_eq!(n, 0);
+        type Count = unsafe extern "C" fn(*const profsubd_mesh, *mut usize) -> profsubd_status;
+        let counts: [(Count, &str, usize); 6] = [
+            (profsubd_mesh_num_vertices, "num_vertices", 6),
+            (profsubd_mesh_num_faces, "num_faces", 2),
+            (profsubd_mesh_num_face_indices, "num_face_indices", 8),
+            (profsubd_mesh_num_creases, "num_creases", 1),
+            (profsubd_mesh_num_corners, "num_corners", 1),
+            (profsubd_mesh_num_holes, "num_holes", 0),
+        ];
+        for (count, what, expected) in counts {
+            check(count(mesh, &mut n), PROFSUBD_OK, what);
+            assert_eq!(n, expected, "{what}");
+        }
         let mut positions = vec![0.0f64; 18];
         check(
             profsubd_mesh_get_positions(mesh, positions.as_mut_ptr(), 18, &mut n),

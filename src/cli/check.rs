@@ -6,9 +6,8 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{print_warnings, SubdivFlags};
+use super::{read_mesh, SubdivFlags};
 use crate::error::Result;
-use crate::io::obj::read_obj_file;
 use crate::mesh::{Mesh, MeshReport, SHARPNESS_INFINITE};
 use crate::options::{BoundaryInterpolation, CreaseMethod, TriangleSubdivision};
 
@@ -32,18 +31,14 @@ pub struct CheckArgs {
 /// Run `check`: print the report; exit code 0 for a manifold mesh, 2 for a mesh that loads
 /// but is not a manifold (an unreadable or invalid file is an error, exit code 1).
 pub fn run(args: &CheckArgs) -> Result<i32> {
-    let read = read_obj_file(&args.mesh)?;
-    print_warnings(&read.warnings);
-    let report = read.mesh.check();
+    let mesh = read_mesh(&args.mesh)?;
+    let report = mesh.check();
     if args.json {
-        println!(
-            "{}",
-            json_report(&args.mesh, &read.mesh, &report, &args.options)
-        );
+        println!("{}", json_report(&args.mesh, &mesh, &report, &args.options));
     } else {
         print!(
             "{}",
-            format_report(&args.mesh, &read.mesh, &report, &args.options)
+            format_report(&args.mesh, &mesh, &report, &args.options)
         );
     }
     Ok(if report.is_manifold() { 0 } else { 2 })

@@ -4,9 +4,9 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{print_warnings, SubdivFlags};
+use super::{read_mesh, SubdivFlags};
 use crate::error::Result;
-use crate::io::obj::{read_obj_file, write_obj_file};
+use crate::io::obj::write_obj_file;
 use crate::mesh::Mesh;
 
 /// Arguments of `convert`.
@@ -25,9 +25,7 @@ pub struct ConvertArgs {
 
 /// Run `convert`; returns exit code 0 on success.
 pub fn run(args: &ConvertArgs) -> Result<i32> {
-    let read = read_obj_file(&args.input)?;
-    print_warnings(&read.warnings);
-    let mut parts = read.mesh.into_parts();
+    let mut parts = read_mesh(&args.input)?.into_parts();
     parts.options = args.options.partial().over(parts.options);
     let mesh = Mesh::from_parts(parts)?;
     write_obj_file(&mesh, &args.output)?;

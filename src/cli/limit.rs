@@ -12,10 +12,9 @@ use std::path::{Path, PathBuf};
 
 use clap::Args;
 
-use super::{print_warnings, SubdivFlags};
+use super::{read_mesh, SubdivFlags};
 use crate::error::{Error, Result};
 use crate::eval::{limit_vertex_samples, Evaluator, LimitSample};
-use crate::io::obj::read_obj_file;
 
 /// Arguments of `limit`.
 #[derive(Debug, Args)]
@@ -38,14 +37,13 @@ pub struct LimitArgs {
 
 /// Run `limit`; returns exit code 0 on success.
 pub fn run(args: &LimitArgs) -> Result<i32> {
-    let read = read_obj_file(&args.input)?;
-    print_warnings(&read.warnings);
-    let options = args.options.partial().over(read.mesh.options()).resolve();
+    let mesh = read_mesh(&args.input)?;
+    let options = args.options.partial().over(mesh.options()).resolve();
     let samples = match &args.at {
-        None => limit_vertex_samples(&read.mesh, &options)?,
+        None => limit_vertex_samples(&mesh, &options)?,
         Some(path) => {
             let points = read_points(path)?;
-            let ev = Evaluator::new(&read.mesh, &options)?;
+            let ev = Evaluator::new(&mesh, &options)?;
             let mut out = Vec::with_capacity(points.len());
             for p in &points {
                 out.push(ev.evaluate(p.face, p.u, p.v).map_err(|e| Error::Parse {

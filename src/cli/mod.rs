@@ -17,10 +17,13 @@ pub mod revolve;
 pub mod sweep;
 
 use std::ffi::OsString;
+use std::path::Path;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use crate::error::Result;
+use crate::io::obj::read_obj_file;
+use crate::mesh::Mesh;
 use crate::options::{BoundaryInterpolation, CreaseMethod, PartialOptions, TriangleSubdivision};
 
 /// Profile curves to Catmull-Clark control meshes, and tools for OBJ meshes with
@@ -220,9 +223,11 @@ pub fn dispatch(command: &Command) -> Result<i32> {
     }
 }
 
-/// Print reader warnings to stderr, one per line.
-pub(crate) fn print_warnings(warnings: &[String]) {
-    for w in warnings {
+/// Read an OBJ mesh, printing the reader's warnings to stderr, one per line.
+pub(crate) fn read_mesh(path: &Path) -> Result<Mesh> {
+    let read = read_obj_file(path)?;
+    for w in &read.warnings {
         eprintln!("profsubd: warning: {w}");
     }
+    Ok(read.mesh)
 }

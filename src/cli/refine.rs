@@ -5,9 +5,9 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{print_warnings, SubdivFlags};
+use super::{read_mesh, SubdivFlags};
 use crate::error::Result;
-use crate::io::obj::{read_obj_file, write_obj_file};
+use crate::io::obj::write_obj_file;
 use crate::refine::{refine_uniform_ordered, VertexOrder};
 
 /// Arguments of `refine`.
@@ -33,15 +33,14 @@ pub struct RefineArgs {
 
 /// Run `refine`; returns exit code 0 on success.
 pub fn run(args: &RefineArgs) -> Result<i32> {
-    let read = read_obj_file(&args.input)?;
-    print_warnings(&read.warnings);
-    let options = args.options.partial().over(read.mesh.options()).resolve();
+    let mesh = read_mesh(&args.input)?;
+    let options = args.options.partial().over(mesh.options()).resolve();
     let order = if args.faces_first {
         VertexOrder::FacesFirst
     } else {
         VertexOrder::VerticesFirst
     };
-    let refined = refine_uniform_ordered(&read.mesh, &options, args.level, order)?;
+    let refined = refine_uniform_ordered(&mesh, &options, args.level, order)?;
     write_obj_file(&refined, &args.output)?;
     println!(
         "wrote {} (level {}: {} vertices, {} faces, {} creases, {} corners, {} holes)",

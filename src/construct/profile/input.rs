@@ -167,11 +167,7 @@ impl ProfileInput {
 
     /// Parse the JSON form; `path` only names the input in messages.
     pub fn from_json(text: &str, path: &Path) -> Result<Self> {
-        serde_json::from_str(text).map_err(|e| Error::Parse {
-            path: path.to_path_buf(),
-            line: e.line(),
-            message: e.to_string(),
-        })
+        crate::io::json::parse_json(text, path)
     }
 
     /// Check the settings (not the curves): `around` a multiple of 4 in range, `along` in

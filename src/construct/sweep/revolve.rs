@@ -261,11 +261,7 @@ impl RevolveInput {
 
     /// Parse the JSON form; `path` only names the input in messages.
     pub fn from_json(text: &str, path: &Path) -> Result<RevolveInput> {
-        serde_json::from_str(text).map_err(|e| Error::Parse {
-            path: path.to_path_buf(),
-            line: e.line(),
-            message: e.to_string(),
-        })
+        crate::io::json::parse_json(text, path)
     }
 
     /// Whether the revolution is a full turn.

@@ -19,6 +19,8 @@
 #include "test_support.h"
 #include "vertex_targets.h"
 
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/topologyLevel.h>
 
 #include <algorithm>
@@ -81,6 +83,66 @@ void check_model(Checker &ck, const Model &m) {
     ck.note(s.str());
     ck.check(worst <= 1e-10 * diag, "Bfr's limit at every control vertex equals its target");
     ck.check(worst_exact <= 1e-10 * diag, "profsubd's exact limit equals every target");
+}
+
+// A plane n . x = d (unit n) that flat caps of a model lie in.
+struct Plane {
+    double n[3];
+    double d;
+};
+
+// The flat caps are flat in OpenSubdiv's limit too: for each plane, the faces whose four
+// targets lie in it (the cap's faces) are evaluated by Bfr::Surface<double> on a 9 x 9 (u, v)
+// grid; every sample must lie in the plane to 1e-12 x diagonal.
+void check_flat_caps(Checker &ck, const Model &m, const std::vector<Plane> &planes) {
+    ck.set_context(m.name + ", flat caps");
+    std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(m.shape);
+    if (!ck.check(refiner != nullptr, "Far accepts the mesh")) {
+        return;
+    }
+    double worst = 0, diag = 0;
+    compare(m.targets, m.targets, &worst, &diag);
+    Bfr::RefinerSurfaceFactory<>::Options options;
+    options.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
+    Bfr::RefinerSurfaceFactory<> factory(*refiner, options);
+    const Far::TopologyLevel &level = refiner->GetLevel(0);
+    Bfr::Surface<double> surface;
+    Bfr::Surface<double>::PointDescriptor desc(3);
+    std::vector<double> patch;
+    for (const Plane &pl : planes) {
+        auto distance = [&](const double *x) {
+            return std::fabs(pl.n[0] * x[0] + pl.n[1] * x[1] + pl.n[2] * x[2] - pl.d);
+        };
+        int faces = 0;
+        double far = 0;
+        for (int f = 0; f < level.GetNumFaces(); ++f) {
+            Far::ConstIndexArray fv = level.GetFaceVertices(f);
+            bool on = true;
+            for (int i = 0; i < fv.size(); ++i) {
+                on = on && distance(&m.targets[3 * static_cast<size_t>(fv[i])]) < 1e-12 * diag;
+            }
+            if (!on || !factory.InitVertexSurface<double>(f, &surface)) {
+                continue;
+            }
+            ++faces;
+            patch.resize(static_cast<size_t>(surface.GetNumPatchPoints()) * 3);
+            surface.PreparePatchPoints(m.shape.positions.data(), desc, patch.data(), desc);
+            for (int a = 0; a <= 8; ++a) {
+                for (int b = 0; b <= 8; ++b) {
+                    double uv[2] = {a / 8.0, b / 8.0}, x[3];
+                    surface.Evaluate(uv, patch.data(), desc, x);
+                    far = !(distance(x) <= far) ? distance(x) : far;
+                }
+            }
+        }
+        std::ostringstream s;
+        s << m.name << ": cap plane (" << pl.n[0] << ", " << pl.n[1] << ", " << pl.n[2] << ") . x = "
+          << pl.d << ": " << faces << " faces, Bfr samples off the plane max " << far / diag
+          << " x diagonal";
+        ck.note(s.str());
+        ck.check(faces > 0, "the cap has faces");
+        ck.check(far <= 1e-12 * diag, "Bfr's limit surface of the cap lies in its plane");
+    }
 }
 
 struct SweptDeleter {
@@ -366,6 +428,25 @@ int main() {
     }
     for (const Model &m : models) {
         check_model(ck, m);
+    }
+    // Cap planes: the meridian planes at 0 and 270 degrees (y = 0, x = 0), 180 degrees (y = 0),
+    // and the flat ends' planes.
+    const Plane y0 = {{0, 1, 0}, 0}, x0 = {{1, 0, 0}, 0};
+    const std::vector<std::pair<std::string, std::vector<Plane>>> caps = {
+        {"wine_glass_cutaway", {y0, x0}},
+        {"vase_cutaway", {y0, x0, {{0, 0, 1}, 0}, {{0, 0, 1}, 5.5}}},
+        {"capped sphere wedge 270 deg", {y0, x0}},
+        {"capped half cone", {y0, {{0, 0, 1}, 0}}},
+        {"capped cylinder (full turn, flat discs)", {{{0, 0, 1}, 0}, {{0, 0, 1}, 2}}},
+        {"capped cup (polyline)", {y0}},
+    };
+    for (const auto &c : caps) {
+        auto m = std::find_if(models.begin(), models.end(),
+                              [&](const Model &x) { return x.name == c.first; });
+        ck.set_context(c.first);
+        if (ck.check(m != models.end(), "model present")) {
+            check_flat_caps(ck, *m, c.second);
+        }
     }
     ck.set_context("");
     ck.equal(models.size(), size_t(23), "every model built");

@@ -8,7 +8,7 @@ use super::level::{find_edge_in, Level};
 use crate::catmark::boundary;
 use crate::catmark::crease::{is_sharp, vertex_rule};
 use crate::mesh::Mesh;
-use crate::options::SubdivOptions;
+use crate::options::{BoundaryInterpolation, SubdivOptions};
 
 impl Level {
     /// The base level of `mesh` under the options the mesh carries (file tags, defaults for
@@ -136,7 +136,12 @@ impl Level {
         let rule = self.options.boundary;
         // Holes from boundary interpolation "none" look at the tagged sharpness, before the
         // boundary edges are sharpened.
-        for v in 0..self.num_vertices() {
+        let vertices = if rule == BoundaryInterpolation::None {
+            0..self.num_vertices()
+        } else {
+            0..0
+        };
+        for v in vertices {
             let topo = self.vertex_topology(v);
             let tags = self
                 .vertex_edges(v)

@@ -197,3 +197,59 @@ fn bottle_limit_surface_keeps_its_crease_rings() {
     let smallest_turn = rings.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
     println!("bottle: smallest normal turn across a crease edge {smallest_turn:.1}°");
 }
+
+/// Valence of every vertex of a mesh.
+fn valences(m: &profsubd::Mesh) -> Vec<usize> {
+    let mut edges = std::collections::HashSet::new();
+    for f in 0..m.num_faces() {
+        let face = m.face(f);
+        for i in 0..face.len() {
+            let (a, b) = (face[i], face[(i + 1) % face.len()]);
+            edges.insert((a.min(b), a.max(b)));
+        }
+    }
+    let mut val = vec![0; m.num_vertices()];
+    for (a, b) in edges {
+        val[a as usize] += 1;
+        val[b as usize] += 1;
+    }
+    val
+}
+
+#[test]
+fn both_ends_closed_need_two_rings() {
+    // A lens (arcs meeting the axis at 45°: tip at both ends, one segment) and an ellipsoid
+    // (smooth poles): with too few rings both ends would close on one ring, leaving vertices
+    // of valence 2; the smallest accepted `along` gives valences 3 to 5 except at tips.
+    let arc: Vec<[f64; 2]> = (0..=16)
+        .map(|i| {
+            let t = -std::f64::consts::FRAC_PI_4 * (1.0 - i as f64 / 8.0);
+            [2f64.sqrt() * t.cos() - 1.0, 2f64.sqrt() * t.sin()]
+        })
+        .collect();
+    let mut lens = profsubd::construct::profile::ProfileInput::new(arc.clone(), arc);
+    lens.around = 8;
+    let mut sphere = ellipsoid(1.0, 1.0, 1.0, 16);
+    sphere.around = 8;
+    for (name, mut input, ends) in [
+        ("lens", lens, [EndKind::Tip, EndKind::Tip]),
+        ("sphere", sphere, [EndKind::Smooth, EndKind::Smooth]),
+    ] {
+        input.along = 2;
+        let e = build(&input).unwrap_err().to_string();
+        assert!(
+            e.contains("valence 2") && e.contains("along >= 3"),
+            "{name}: {e}"
+        );
+        input.along = 3;
+        let model = build(&input).unwrap();
+        assert_eq!(model.ends, ends, "{name}");
+        let tips: Vec<u32> = model.mesh.corners().iter().map(|c| c.vertex).collect();
+        for (v, n) in valences(&model.mesh).into_iter().enumerate() {
+            assert!(
+                tips.contains(&(v as u32)) || (3..=5).contains(&n),
+                "{name}: vertex {v} has valence {n}"
+            );
+        }
+    }
+}

@@ -37,9 +37,8 @@ impl Rings {
             min[0] = min[0].max(cap_rings);
         }
         if sil.ends[1] == EndKind::Smooth {
-            // Two caps need a ring between them: caps on one ring would leave valence 2.
             min[segs - 1] = if segs == 1 && sil.ends[0] == EndKind::Smooth {
-                2 * cap_rings + 1
+                2 * cap_rings
             } else {
                 min[segs - 1].max(cap_rings)
             };
@@ -49,6 +48,21 @@ impl Rings {
             return Err(Error::invalid_argument(format!(
                 "along = {along} is too small: the {segs} segment(s) between corners need one \
                  ring interval each and each smooth pole's cap {cap_rings}; use along >= {need}"
+            )));
+        }
+        // Both ends closed by caps or tips need distinct rings: closing one ring from both
+        // sides would leave vertices of valence 2.
+        let depth = |e: EndKind| match e {
+            EndKind::Smooth => cap_rings,
+            EndKind::Tip => 1,
+            EndKind::Open | EndKind::Flat => 0,
+        };
+        let [bottom, top] = sil.ends;
+        let closed_need = depth(bottom) + depth(top) + 1;
+        if !sil.ends.contains(&EndKind::Open) && along < closed_need {
+            return Err(Error::invalid_argument(format!(
+                "along = {along} is too small: the caps or tips closing both ends would meet on \
+                 one ring (vertices of valence 2); use along >= {closed_need}"
             )));
         }
         let mut count = min;

@@ -307,8 +307,8 @@ impl RevolveInput {
     /// Sample the revolution: rings from bottom to top (poles excluded), each with one data
     /// point per meridian. Errors ([`Error::InvalidArgument`]): bad settings or profile (see
     /// [`RevolvedProfile::new`]), a pole on a partial turn, `samples_around` not a multiple
-    /// of 4 with a smooth pole or odd with a tip, too few profile intervals to leave a ring
-    /// between two poles.
+    /// of 4 with a smooth pole or odd with a tip, too few profile intervals to leave two
+    /// rings between two poles.
     pub fn grid(&self, profile: &RevolvedProfile) -> Result<SweepGrid> {
         Ok(self.rings(profile)?.0)
     }
@@ -391,9 +391,12 @@ impl RevolveInput {
             .curve
             .sample_range("profile", s0, s1, self.samples_profile)?;
         let poles = ends.iter().filter(|e| **e != GridEnd::Open).count();
-        if samples.len() < poles + 1 {
+        // Two poles need two rings: caps or fans closing one ring from both sides would
+        // leave vertices of valence 2.
+        if samples.len() < 2 * poles {
             return Err(Error::invalid_argument(format!(
-                "samples_profile = {}: a profile with two poles needs at least 2 intervals",
+                "samples_profile = {}: a profile with two poles needs at least 3 intervals (two rings \
+                 between the poles)",
                 self.samples_profile
             )));
         }
@@ -582,7 +585,7 @@ mod tests {
             msg(&|i| i.profile = vec![[1.0, 0.0], [2.0, 1.0], [2.0, 0.0], [1.0, 1.0]])
                 .contains("crosses itself")
         );
-        assert!(msg(&|i| i.samples_profile = 1).contains("at least 2 intervals"));
+        assert!(msg(&|i| i.samples_profile = 2).contains("at least 3 intervals"));
         let e = RevolveInput::from_json(
             r#"{"profile": [[1,0],[1,1]], "angle": 90}"#,
             Path::new("r.json"),

@@ -412,6 +412,49 @@ void check_options(Checker &ck) {
            "set_triangle_rule NULL");
 }
 
+// Uniform refinement and its vertex-order setting.
+void check_refine(Checker &ck) {
+    ck.set_context("refine");
+    profsubd_options *raw = nullptr;
+    ck.equal(int(profsubd_options_new(&raw)), int(PROFSUBD_OK), "options_new");
+    OptionsPtr o(raw);
+    for (int32_t v : {PROFSUBD_ORDER_VERTICES_FIRST, PROFSUBD_ORDER_FACES_FIRST}) {
+        ck.equal(int(profsubd_options_set_vertex_order(o.get(), v)), int(PROFSUBD_OK),
+                 "set_vertex_order " + std::to_string(v));
+    }
+    for (int32_t v : {-1, 2, INT32_MAX, INT32_MIN}) {
+        expect(ck, profsubd_options_set_vertex_order(o.get(), v), PROFSUBD_ERROR_INVALID_ARGUMENT,
+               {"vertex order", std::to_string(v)}, "set_vertex_order " + std::to_string(v));
+    }
+    expect(ck, profsubd_options_set_vertex_order(nullptr, 0), PROFSUBD_ERROR_NULL_ARGUMENT, {"options"},
+           "set_vertex_order NULL");
+    SquareDesc s;
+    profsubd_mesh *m = nullptr;
+    profsubd_mesh_new(&s.d, &m);
+    MeshPtr mesh(m);
+    expect(ck, profsubd_options_set_vertex_order(reinterpret_cast<profsubd_options *>(m), 0),
+           PROFSUBD_ERROR_INVALID_HANDLE, {"profsubd_options"}, "mesh handle passed as options");
+    profsubd_mesh *out = nullptr;
+    expect(ck, profsubd_refine_uniform(nullptr, o.get(), 1, &out), PROFSUBD_ERROR_NULL_ARGUMENT, {"mesh"},
+           "refine_uniform NULL mesh");
+    expect(ck, profsubd_refine_uniform(m, o.get(), 1, nullptr), PROFSUBD_ERROR_NULL_ARGUMENT, {"out"},
+           "refine_uniform NULL out");
+    expect(ck, profsubd_refine_uniform(m, o.get(), 9, &out), PROFSUBD_ERROR_INVALID_ARGUMENT, {"maximum 8"},
+           "refine_uniform level 9");
+    expect(ck, profsubd_refine_uniform(reinterpret_cast<profsubd_mesh *>(o.get()), o.get(), 1, &out),
+           PROFSUBD_ERROR_INVALID_HANDLE, {"profsubd_mesh"}, "options handle passed as a mesh");
+    ck.check(out == nullptr, "out untouched on error");
+    // The last valid order (faces first) stays set after the refused values: the face point
+    // of the square (0.5, 0.5, 0) is vertex 0 of the refined mesh.
+    ck.equal(int(profsubd_refine_uniform(m, o.get(), 1, &out)), int(PROFSUBD_OK), "refine_uniform level 1");
+    MeshPtr refined(out);
+    double p[27] = {};
+    size_t needed = 0;
+    ck.equal(int(profsubd_mesh_get_positions(out, p, 27, &needed)), int(PROFSUBD_OK), "get_positions");
+    ck.check(needed == 27 && p[0] == 0.5 && p[1] == 0.5 && p[2] == 0.0,
+             "faces-first order kept: vertex 0 is the face point");
+}
+
 void check_strings_and_version(Checker &ck) {
     ck.set_context("status strings and version");
     std::set<std::string> seen;
@@ -484,6 +527,7 @@ int main() {
     check_queries(ck);
     check_handles(ck);
     check_options(ck);
+    check_refine(ck);
     check_strings_and_version(ck);
     check_threads(ck, tmp);
     return ck.finish();

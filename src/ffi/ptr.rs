@@ -269,6 +269,85 @@ mod tests {
         }
     }
 
+    /// A handle type for the [`copy_slice`] tests.
+    struct Values {
+        _private: [u8; 0],
+    }
+
+    impl Handle for Values {
+        type Inner = Vec<u32>;
+        const MAGIC: u64 = u64::from_le_bytes(*b"psd-TEST");
+        const NAME: &'static str = "values";
+    }
+
+    /// `copy_slice` over the handle's values, 2 elements per item (3 items).
+    unsafe fn copy_pairs(
+        h: *const Values,
+        out: *mut u32,
+        capacity: usize,
+        needed: *mut usize,
+    ) -> profsubd_status {
+        copy_slice(
+            (h, "v"),
+            (out, "out", capacity, needed),
+            (2, "pairs"),
+            |v| Ok((v.len() / 2, v.iter().copied())),
+        )
+    }
+
+    #[test]
+    fn copy_slice_checks_handle_then_needed_then_buffer_then_copies() {
+        use crate::ffi::error::last_error;
+        let h = handle::into_raw::<Values>(vec![1, 2, 3, 4, 5, 6]);
+        let mut buf = [9u32; 6];
+        let mut needed = 77usize;
+        unsafe {
+            // The handle comes first, even with a NULL buffer that could not hold anything.
+            let st = copy_pairs(std::ptr::null(), std::ptr::null_mut(), 5, &mut needed);
+            assert_eq!(
+                (st, last_error().as_str()),
+                (PROFSUBD_ERROR_NULL_ARGUMENT, "argument `v` is NULL")
+            );
+            let misaligned = buf.as_mut_ptr().cast::<u8>().add(1).cast::<usize>();
+            let st = copy_pairs(h, std::ptr::null_mut(), 5, misaligned);
+            assert_eq!(st, PROFSUBD_ERROR_INVALID_ARGUMENT);
+            let st = copy_pairs(h, std::ptr::null_mut(), 1, &mut needed);
+            assert_eq!(st, PROFSUBD_ERROR_NULL_ARGUMENT);
+            assert_eq!(needed, 77, "nothing written on an argument error");
+            // Size query: capacity 0, NULL buffer.
+            let st = copy_pairs(h, std::ptr::null_mut(), 0, &mut needed);
+            assert_eq!((st, needed), (PROFSUBD_ERROR_BUFFER_TOO_SMALL, 3));
+            // Too small: needed written, buffer untouched.
+            needed = 0;
+            let st = copy_pairs(h, buf.as_mut_ptr(), 2, &mut needed);
+            assert_eq!(
+                (st, needed, buf),
+                (PROFSUBD_ERROR_BUFFER_TOO_SMALL, 3, [9; 6])
+            );
+            assert_eq!(
+                last_error(),
+                "buffer too small: capacity is 2 pairs, 3 needed"
+            );
+            // Fits: copied, needed = the item count; `needed` may be NULL.
+            let st = copy_pairs(h, buf.as_mut_ptr(), 3, &mut needed);
+            assert_eq!((st, needed, buf), (PROFSUBD_OK, 3, [1, 2, 3, 4, 5, 6]));
+            assert_eq!(
+                copy_pairs(h, buf.as_mut_ptr(), 3, std::ptr::null_mut()),
+                PROFSUBD_OK
+            );
+            // An error of the accessor is the call's error, with nothing written.
+            needed = 77;
+            let st = copy_slice(
+                (h.cast_const(), "v"),
+                (buf.as_mut_ptr(), "out", 3, &mut needed),
+                (2, "pairs"),
+                |_| Err::<(usize, [u32; 0]), _>(FfiError::invalid_argument("no pairs today")),
+            );
+            assert_eq!((st, needed), (PROFSUBD_ERROR_INVALID_ARGUMENT, 77));
+            handle::free(h);
+        }
+    }
+
     #[test]
     fn copy_out_reports_needed_and_leaves_buffer_untouched() {
         let mut buf = [7u32; 2];

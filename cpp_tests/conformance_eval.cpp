@@ -94,16 +94,6 @@ struct Figures {
     std::string patch_where;
 };
 
-double diagonal(const OsdShape &s) {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (size_t i = 0; i < s.positions.size(); ++i) {
-        lo[i % 3] = std::min(lo[i % 3], s.positions[i]);
-        hi[i % 3] = std::max(hi[i % 3], s.positions[i]);
-    }
-    return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 bool has_semi_sharp(const OsdShape &s) {
     for (float x : s.crease_sharpness) {
         if (x > 0 && x < 10) return true;
@@ -241,7 +231,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
     std::unique_ptr<Far::TopologyRefiner> refiner = profsubd_test::build_refiner(shape, opts);
     if (!c_.check(refiner != nullptr, label + ": Far rejects the mesh")) return;
     const Far::TopologyLevel &base = refiner->GetLevel(0);
-    double diag = diagonal(shape);
+    double diag = profsubd_test::bbox_diagonal(shape.positions);
 
     std::string err;
     profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);

@@ -443,14 +443,7 @@ void check_shape(Checker &ck, const std::string &name, OsdShape shape, Figures &
     if (!ck.check(refiner != nullptr, "Far rejects the shape")) return;
     const Far::TopologyLevel &L = refiner->GetLevel(0);
     int nv = L.GetNumVertices();
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (int i = 0; i < nv; ++i) {
-        for (int c = 0; c < 3; ++c) {
-            lo[c] = std::min(lo[c], shape.positions[3 * i + c]);
-            hi[c] = std::max(hi[c], shape.positions[3 * i + c]);
-        }
-    }
-    double diag = dist({lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]});
+    double diag = profsubd_test::bbox_diagonal(shape.positions);
     if (diag == 0.0) diag = 1.0;
     const double tol = 1e-12 * diag;
     VertexKinds kinds = classify(L, shape.options);

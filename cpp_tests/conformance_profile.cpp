@@ -45,16 +45,6 @@ struct Model {
     bool closed = true;           // no boundary: Euler characteristic 2
 };
 
-double diagonal(const std::vector<double> &p) {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (size_t i = 0; i < p.size(); ++i) {
-        lo[i % 3] = std::min(lo[i % 3], p[i]);
-        hi[i % 3] = std::max(hi[i % 3], p[i]);
-    }
-    return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 double dist3(const double *a, const double *b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
                      (a[2] - b[2]) * (a[2] - b[2]));
@@ -115,7 +105,7 @@ void check_model(Checker &ck, Model &m, double *worst_dart) {
         return;
     }
     ck.equal(m.targets.size(), m.shape.positions.size(), "one target per vertex");
-    const double tol = 1e-10 * diagonal(m.targets);
+    const double tol = 1e-10 * bbox_diagonal(m.targets);
     std::vector<double> bfr = bfr_vertex_limits(*refiner, m.shape.positions);
     std::vector<double> exact;
     ck.check(profsubd_vertex_limits(m.mesh.get(), &exact), "profsubd evaluator");
@@ -141,7 +131,7 @@ void check_model(Checker &ck, Model &m, double *worst_dart) {
         }
     }
     ck.check(worst_exact <= tol, "profsubd's exact limit equals every target");
-    double diag = diagonal(m.targets);
+    double diag = bbox_diagonal(m.targets);
     std::ostringstream s;
     s << m.name << ": " << dart.size() << " vertices, Bfr vs target max " << worst_bfr / diag
       << " x diagonal, profsubd exact vs target " << worst_exact / diag << " x diagonal; "

@@ -42,19 +42,6 @@ namespace {
 
 constexpr double kTolerance = 1e-12;  // x bounding-box diagonal
 
-double diagonal(const std::vector<double> &pos) {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (size_t i = 0; i + 2 < pos.size(); i += 3) {
-        for (int k = 0; k < 3; ++k) {
-            lo[k] = std::min(lo[k], pos[i + k]);
-            hi[k] = std::max(hi[k], pos[i + k]);
-        }
-    }
-    double d = 0;
-    for (int k = 0; k < 3; ++k) d += (hi[k] - lo[k]) * (hi[k] - lo[k]);
-    return std::sqrt(d);
-}
-
 std::string point(const double *p) {
     char b[128];
     std::snprintf(b, sizeof b, "(%.17g %.17g %.17g)", p[0], p[1], p[2]);
@@ -171,7 +158,7 @@ bool compare_with_far(Checker &c, Stats &stats, const std::string &name, const O
     }
 
     // Positions, index by index.
-    const double diag = std::max(diagonal(s.positions), 1e-300);
+    const double diag = std::max(profsubd_test::bbox_diagonal(s.positions), 1e-300);
     int reported = 0;
     for (int v = 0; v < far.GetNumVertices(); ++v) {
         double d = 0;
@@ -437,7 +424,7 @@ void compare_with_openmesh(Checker &c, Stats &stats, const std::string &name, co
     profsubd_test::CapiMesh m;
     if (!c.check(profsubd_test::read_capi_mesh(mine.get(), &m).empty(), "read refined mesh")) return;
     if (!c.equal(m.num_vertices, static_cast<size_t>(om.n_vertices()), "vertex count")) return;
-    const double diag = diagonal(s.positions);
+    const double diag = profsubd_test::bbox_diagonal(s.positions);
 
     // OpenMesh keeps the base vertices first, as Far does.
     for (int v = 0; v < s.num_vertices(); ++v) {

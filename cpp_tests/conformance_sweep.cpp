@@ -46,21 +46,14 @@ struct Model {
 // Largest |a_i - b_i| over points of 3 doubles, and the diagonal of b's bounding box.
 void compare(const std::vector<double> &a, const std::vector<double> &b, double *worst,
              double *diag) {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     *worst = 0;
     for (size_t v = 0; 3 * v + 2 < b.size(); ++v) {
         double d2 = 0;
-        for (int k = 0; k < 3; ++k) {
-            double x = b[3 * v + k];
-            lo[k] = std::min(lo[k], x);
-            hi[k] = std::max(hi[k], x);
-            d2 += (a[3 * v + k] - x) * (a[3 * v + k] - x);
-        }
+        for (int k = 0; k < 3; ++k) d2 += (a[3 * v + k] - b[3 * v + k]) * (a[3 * v + k] - b[3 * v + k]);
         // NaN (no surface found) must fail, so compare with !(<=).
         *worst = !(std::sqrt(d2) <= *worst) ? std::sqrt(d2) : *worst;
     }
-    *diag = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                      (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    *diag = bbox_diagonal(b);
 }
 
 void check_model(Checker &ck, const Model &m) {

@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -103,6 +104,16 @@ bool write_text_file(const std::string &path, const std::string &text) {
     std::ofstream out(path, std::ios::binary);
     out << text;
     return static_cast<bool>(out);
+}
+
+double bbox_diagonal(const std::vector<double> &xyz) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (size_t i = 0; i < xyz.size(); ++i) {
+        lo[i % 3] = std::min(lo[i % 3], xyz[i]);
+        hi[i % 3] = std::max(hi[i % 3], xyz[i]);
+    }
+    return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                     (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
 }  // namespace profsubd_test

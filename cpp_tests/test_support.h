@@ -81,6 +81,9 @@ private:
     std::string path_;
 };
 
+// Diagonal of the bounding box of `xyz` (3 doubles per point).
+double bbox_diagonal(const std::vector<double> &xyz);
+
 // Writes `text` to `path`; false on failure.
 bool write_text_file(const std::string &path, const std::string &text);
 

@@ -173,13 +173,7 @@ int main(int argc, char **argv) {
         std::fprintf(stderr, "bench_eval: %s\n", err.c_str());
         return 1;
     }
-    profsubd_options *opts = nullptr;
-    profsubd_options_new(&opts);
-    profsubd_options_set_boundary(opts, shape.options.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_NONE
-                                            ? PROFSUBD_BOUNDARY_NONE
-                                        : shape.options.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                            ? PROFSUBD_BOUNDARY_EDGE_ONLY
-                                            : PROFSUBD_BOUNDARY_EDGE_AND_CORNER);
+    profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
     double checksum = 0;
 
     // --- P2: uniform refinement to level 3.

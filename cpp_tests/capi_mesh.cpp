@@ -182,4 +182,27 @@ OsdShape to_osd_shape(const CapiMesh &c, const OpenSubdiv::Sdc::Options &options
     return s;
 }
 
+OptionsPtr capi_options(const OpenSubdiv::Sdc::Options &options) {
+    using Sdc = OpenSubdiv::Sdc::Options;
+    profsubd_options *raw = nullptr;
+    if (profsubd_options_new(&raw) != PROFSUBD_OK) return nullptr;
+    OptionsPtr out(raw);
+    int32_t boundary = PROFSUBD_BOUNDARY_EDGE_AND_CORNER;
+    switch (options.GetVtxBoundaryInterpolation()) {
+        case Sdc::VTX_BOUNDARY_NONE: boundary = PROFSUBD_BOUNDARY_NONE; break;
+        case Sdc::VTX_BOUNDARY_EDGE_ONLY: boundary = PROFSUBD_BOUNDARY_EDGE_ONLY; break;
+        default: break;
+    }
+    int32_t crease = options.GetCreasingMethod() == Sdc::CREASE_CHAIKIN ? PROFSUBD_CREASE_CHAIKIN
+                                                                        : PROFSUBD_CREASE_UNIFORM;
+    int32_t triangles = options.GetTriangleSubdivision() == Sdc::TRI_SUB_SMOOTH ? PROFSUBD_TRIANGLES_SMOOTH
+                                                                                : PROFSUBD_TRIANGLES_CATMARK;
+    if (profsubd_options_set_boundary(raw, boundary) != PROFSUBD_OK ||
+        profsubd_options_set_crease_method(raw, crease) != PROFSUBD_OK ||
+        profsubd_options_set_triangle_rule(raw, triangles) != PROFSUBD_OK) {
+        return nullptr;
+    }
+    return out;
+}
+
 }  // namespace profsubd_test

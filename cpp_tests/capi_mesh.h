@@ -23,6 +23,10 @@ struct OptionsDeleter {
 };
 using OptionsPtr = std::unique_ptr<profsubd_options, OptionsDeleter>;
 
+// A profsubd_options with the boundary rule, crease method and triangle rule of `options` set
+// explicitly; null if a call fails (profsubd_last_error_message() says why).
+OptionsPtr capi_options(const OpenSubdiv::Sdc::Options &options);
+
 // "PROFSUBD_ERROR_PARSE (malformed input file): <last error message>".
 std::string describe_status(profsubd_status status);
 

@@ -154,22 +154,6 @@ const char *name(Config c) {
     return s.c_str();
 }
 
-profsubd_test::OptionsPtr capi_options(const Sdc::Options &o) {
-    profsubd_options *opts = nullptr;
-    profsubd_options_new(&opts);
-    int32_t b = o.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_NONE ? PROFSUBD_BOUNDARY_NONE
-                : o.GetVtxBoundaryInterpolation() == Sdc::Options::VTX_BOUNDARY_EDGE_ONLY ? PROFSUBD_BOUNDARY_EDGE_ONLY
-                                                                                         : PROFSUBD_BOUNDARY_EDGE_AND_CORNER;
-    profsubd_options_set_boundary(opts, b);
-    profsubd_options_set_crease_method(opts, o.GetCreasingMethod() == Sdc::Options::CREASE_CHAIKIN
-                                                  ? PROFSUBD_CREASE_CHAIKIN
-                                                  : PROFSUBD_CREASE_UNIFORM);
-    profsubd_options_set_triangle_rule(opts, o.GetTriangleSubdivision() == Sdc::Options::TRI_SUB_SMOOTH
-                                                 ? PROFSUBD_TRIANGLES_SMOOTH
-                                                 : PROFSUBD_TRIANGLES_CATMARK);
-    return profsubd_test::OptionsPtr(opts);
-}
-
 struct EvaluatorDeleter {
     void operator()(profsubd_evaluator *e) const { profsubd_evaluator_free(e); }
 };
@@ -236,7 +220,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
     std::string err;
     profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
     if (!c_.check(mesh != nullptr, label + ": profsubd_mesh_new: " + err)) return;
-    auto o = capi_options(opts);
+    auto o = profsubd_test::capi_options(opts);
     profsubd_evaluator *raw = nullptr;
     profsubd_status st = profsubd_evaluator_new(mesh.get(), o.get(), &raw);
     if (!c_.check(st == PROFSUBD_OK, label + ": profsubd_evaluator_new: " + profsubd_test::describe_status(st)))

@@ -93,32 +93,14 @@ std::string psd_limits(const OsdShape &shape, PsdLimits *out) {
     std::string err;
     profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
     if (!mesh) return "profsubd_mesh_new: " + err;
-    profsubd_options *o = nullptr;
-    if (profsubd_options_new(&o) != PROFSUBD_OK) return "profsubd_options_new failed";
-    profsubd_test::OptionsPtr opts(o);
-    int32_t b = 2;
-    switch (shape.options.GetVtxBoundaryInterpolation()) {
-    case Sdc::Options::VTX_BOUNDARY_NONE: b = PROFSUBD_BOUNDARY_NONE; break;
-    case Sdc::Options::VTX_BOUNDARY_EDGE_ONLY: b = PROFSUBD_BOUNDARY_EDGE_ONLY; break;
-    default: b = PROFSUBD_BOUNDARY_EDGE_AND_CORNER; break;
-    }
-    int32_t c = shape.options.GetCreasingMethod() == Sdc::Options::CREASE_CHAIKIN
-                    ? PROFSUBD_CREASE_CHAIKIN
-                    : PROFSUBD_CREASE_UNIFORM;
-    int32_t t = shape.options.GetTriangleSubdivision() == Sdc::Options::TRI_SUB_SMOOTH
-                    ? PROFSUBD_TRIANGLES_SMOOTH
-                    : PROFSUBD_TRIANGLES_CATMARK;
-    if (profsubd_options_set_boundary(o, b) != PROFSUBD_OK ||
-        profsubd_options_set_crease_method(o, c) != PROFSUBD_OK ||
-        profsubd_options_set_triangle_rule(o, t) != PROFSUBD_OK) {
-        return "setting options: " + std::string(profsubd_last_error_message());
-    }
+    profsubd_test::OptionsPtr opts = profsubd_test::capi_options(shape.options);
+    if (!opts) return "setting options: " + std::string(profsubd_last_error_message());
     size_t nv = shape.positions.size() / 3;
     std::vector<double> *dst[3] = {&out->p, &out->du, &out->dv};
     int32_t quantities[3] = {PROFSUBD_LIMIT_POSITION, PROFSUBD_LIMIT_DU, PROFSUBD_LIMIT_DV};
     for (int q = 0; q < 3; ++q) {
         profsubd_stencil_table *table = nullptr;
-        profsubd_status st = profsubd_limit_stencils_new(mesh.get(), o, quantities[q], &table);
+        profsubd_status st = profsubd_limit_stencils_new(mesh.get(), opts.get(), quantities[q], &table);
         if (st != PROFSUBD_OK) return "profsubd_limit_stencils_new: " + profsubd_test::describe_status(st);
         dst[q]->assign(3 * nv, 0.0);
         size_t needed = 0;

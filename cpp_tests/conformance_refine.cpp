@@ -56,14 +56,6 @@ const char *boundary_name(Sdc::Options::VtxBoundaryInterpolation b) {
     }
 }
 
-int32_t boundary_to_c(Sdc::Options::VtxBoundaryInterpolation b) {
-    switch (b) {
-        case Sdc::Options::VTX_BOUNDARY_NONE: return PROFSUBD_BOUNDARY_NONE;
-        case Sdc::Options::VTX_BOUNDARY_EDGE_ONLY: return PROFSUBD_BOUNDARY_EDGE_ONLY;
-        default: return PROFSUBD_BOUNDARY_EDGE_AND_CORNER;
-    }
-}
-
 // The largest relative deviation seen, and where.
 struct Stats {
     double max_rel = 0.0;
@@ -85,20 +77,11 @@ profsubd_test::MeshPtr refine_profsubd(Checker &c, const OsdShape &s, const Sdc:
     std::string err;
     profsubd_test::MeshPtr base = profsubd_test::new_mesh_capi(s, &err);
     if (!c.check(base != nullptr, "profsubd_mesh_new: " + err)) return {};
-    profsubd_options *raw = nullptr;
-    if (!c.equal(profsubd_options_new(&raw), PROFSUBD_OK, "profsubd_options_new")) return {};
-    profsubd_test::OptionsPtr opts(raw);
-    profsubd_options_set_boundary(raw, boundary_to_c(o.GetVtxBoundaryInterpolation()));
-    profsubd_options_set_crease_method(
-        raw, o.GetCreasingMethod() == Sdc::Options::CREASE_CHAIKIN ? PROFSUBD_CREASE_CHAIKIN
-                                                                   : PROFSUBD_CREASE_UNIFORM);
-    profsubd_options_set_triangle_rule(
-        raw, o.GetTriangleSubdivision() == Sdc::Options::TRI_SUB_SMOOTH
-                 ? PROFSUBD_TRIANGLES_SMOOTH
-                 : PROFSUBD_TRIANGLES_CATMARK);
-    if (faces_first) profsubd_options_set_vertex_order(raw, PROFSUBD_ORDER_FACES_FIRST);
+    profsubd_test::OptionsPtr opts = profsubd_test::capi_options(o);
+    if (!c.check(opts != nullptr, std::string("options: ") + profsubd_last_error_message())) return {};
+    if (faces_first) profsubd_options_set_vertex_order(opts.get(), PROFSUBD_ORDER_FACES_FIRST);
     profsubd_mesh *out = nullptr;
-    profsubd_status st = profsubd_refine_uniform(base.get(), raw, level, &out);
+    profsubd_status st = profsubd_refine_uniform(base.get(), opts.get(), level, &out);
     if (!c.check(st == PROFSUBD_OK,
                  "profsubd_refine_uniform: " + profsubd_test::describe_status(st))) {
         return {};

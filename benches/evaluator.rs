@@ -1,0 +1,55 @@
+//! Evaluator benches: construction, random (face, u, v) evaluation, vertex limit stencils and
+//! uniform refinement, on a profile model with extraordinary vertices and creases.
+//!
+//! `cargo bench --bench evaluator`. Absolute times only: the ratios to OpenSubdiv come from
+//! the C++ bench `cpp_tests/bench_eval.cpp`, which runs both in one process.
+
+use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
+use profsubd::eval::{limit_stencils, Evaluator};
+use profsubd::refine::refine_uniform;
+use profsubd::SubdivOptions;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+mod support;
+
+fn benches(c: &mut Criterion) {
+    let model = support::bottle(64, 48);
+    let mesh = &model.mesh;
+    let options = SubdivOptions::default();
+    let label = format!("bottle {} quads", mesh.num_faces());
+
+    c.bench_function(&format!("evaluator build, {label}"), |b| {
+        b.iter(|| Evaluator::new(mesh, &options).unwrap())
+    });
+
+    let ev = Evaluator::new(mesh, &options).unwrap();
+    let n = 10_000;
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let faces: Vec<u32> = (0..n)
+        .map(|_| rng.random_range(0..ev.num_parametric_faces() as u32))
+        .collect();
+    let us: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+    let vs: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+    c.bench_function(&format!("evaluate {n} random points, {label}"), |b| {
+        b.iter(|| ev.evaluate_many(&faces, &us, &vs).unwrap())
+    });
+
+    c.bench_function(&format!("vertex limit stencils, {label}"), |b| {
+        b.iter(|| limit_stencils(mesh, &options).unwrap())
+    });
+
+    let mut group = c.benchmark_group("refinement");
+    group.sample_size(10);
+    group.bench_function(format!("refine_uniform level 3, {label}"), |b| {
+        b.iter_batched(
+            || mesh.clone(),
+            |m| refine_uniform(&m, &options, 3).unwrap(),
+            BatchSize::LargeInput,
+        )
+    });
+    group.finish();
+}
+
+criterion_group!(evaluator, benches);
+criterion_main!(evaluator);

@@ -1,5 +1,7 @@
 //! Constructions: from curves to interpolating Catmull-Clark control meshes.
 //!
+//! - [`equidistribute`]: ring spacing weighted by the profile's curvature (resolves a
+//!   sharply turning rim without wasting rings on flat parts);
 //! - [`grading`]: ring spacing graded towards smooth poles (keeps the fourth-order
 //!   convergence next to the caps' valence-3 vertices);
 //! - [`grid`]: ring-by-meridian quad grids with their end treatments, and crease tagging on
@@ -9,6 +11,7 @@
 //! - [`profile`]: the Hui–Lai construction from four planar silhouettes;
 //! - [`sweep`]: revolution and general sweeps.
 
+pub mod equidistribute;
 pub mod grading;
 pub mod grid;
 pub mod pole_cap;

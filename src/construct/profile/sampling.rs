@@ -2,12 +2,16 @@
 //!
 //! Each segment `[T_j, T_{j+1}]` gets intervals in proportion to its length (largest
 //! deficit first), at least one, and a segment next to a smooth pole at least the number of
-//! rings its grid cap spans. Inside a segment rings are uniform in `t`, except in a segment
-//! ending at a smooth pole, where they are graded towards the pole
-//! ([`crate::construct::grading`]); a ring passes through every breakpoint.
+//! rings its grid cap spans. Inside a segment rings are uniform in the curvature-weighted
+//! length of the four curves ([`crate::construct::equidistribute`]), graded towards the pole
+//! in a segment ending at a smooth pole ([`crate::construct::grading`]); a ring passes
+//! through every breakpoint.
+
+use glam::DVec2;
 
 use super::param::CommonParam;
 use super::silhouettes::{EndKind, Silhouettes};
+use crate::construct::equidistribute::{Equidistribution, PROBES};
 use crate::construct::grading::graded;
 use crate::error::{Error, Result};
 
@@ -85,8 +89,16 @@ impl Rings {
                 j == 0 && sil.ends[0] == EndKind::Smooth,
                 j + 1 == segs && sil.ends[1] == EndKind::Smooth,
             ];
+            let probes: Vec<[DVec2; 4]> = (0..=PROBES)
+                .map(|m| param.points(sil, w[0] + (w[1] - w[0]) * m as f64 / PROBES as f64))
+                .collect();
+            let curves: Vec<Vec<DVec2>> = (0..4)
+                .map(|k| probes.iter().map(|p| p[k]).collect())
+                .collect();
+            let eq = Equidistribution::new(&curves);
             for i in 0..c {
-                t.push(w[0] + (w[1] - w[0]) * graded(i as f64 / c as f64, poles));
+                let u = eq.inverse(graded(i as f64 / c as f64, poles));
+                t.push(w[0] + (w[1] - w[0]) * u);
             }
         }
         ring_of_break.push(t.len());

@@ -400,7 +400,9 @@ impl RevolveInput {
                 self.samples_profile
             )));
         }
-        grade_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth));
+        grade_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth), |s| {
+            profile.point(s)
+        });
         if ends[1] != GridEnd::Open {
             samples.pop();
         }

@@ -80,9 +80,9 @@ fn ellipsoid_limit_surface_converges_to_the_ellipsoid() {
     // valence-3 corners shrink like h² and the error there falls like the rest; and they
     // equidistribute a curvature-weighted length (`construct::equidistribute`), so a sharply
     // turning rim gets more of them. Measured (32 × 16, rates per doubling): 1.4e-4 (14.0,
-    // 15.0) for (2, 1, 1.5); 2.1e-4 (24.2, 12.3) for the oblate (3, 2, 0.75), which had 1.25e-3
+    // 15.0) for (2, 1, 1.5); 2.0e-4 (23.4, 11.9) for the oblate (3, 2, 0.75), which had 1.25e-3
     // (3.74, 6.12) with grading on arc length and 6.0e-4 (4.86, 6.65) with uniform rings;
-    // 1.3e-4 (23.2, 14.7) for the tall (1, 1, 5).
+    // 1.6e-4 (28.5, 14.9) for the tall (1, 1, 5).
     for (a, b, c) in [
         (2.0, 1.0, 1.5),
         (1.0, 1.0, 1.0),

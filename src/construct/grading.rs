@@ -19,7 +19,7 @@
 
 use glam::DVec2;
 
-use crate::construct::equidistribute::{Equidistribution, PROBES};
+use crate::construct::equidistribute::{probe_count, Equidistribution};
 use crate::curves::CurveSample;
 
 /// The graded position of the uniform fraction `u ∈ [0, 1]` of a segment whose ends at
@@ -51,8 +51,9 @@ pub fn grade_samples(samples: &mut [CurveSample], poles: [bool; 2], point: impl 
     for (r, w) in breaks.windows(2).enumerate() {
         let ends = [r == 0 && poles[0], r + 1 == runs && poles[1]];
         let (s0, s1) = (samples[w[0]].s, samples[w[1]].s);
-        let probes: Vec<DVec2> = (0..=PROBES)
-            .map(|m| point(s0 + (s1 - s0) * m as f64 / PROBES as f64))
+        let n = probe_count(w[1] - w[0]);
+        let probes: Vec<DVec2> = (0..=n)
+            .map(|m| point(s0 + (s1 - s0) * m as f64 / n as f64))
             .collect();
         let eq = Equidistribution::new(&[probes]);
         let c = (w[1] - w[0]) as f64;

@@ -11,7 +11,7 @@ use glam::DVec2;
 
 use super::param::CommonParam;
 use super::silhouettes::{EndKind, Silhouettes};
-use crate::construct::equidistribute::{Equidistribution, PROBES};
+use crate::construct::equidistribute::{probe_count, Equidistribution};
 use crate::construct::grading::graded;
 use crate::error::{Error, Result};
 
@@ -89,8 +89,9 @@ impl Rings {
                 j == 0 && sil.ends[0] == EndKind::Smooth,
                 j + 1 == segs && sil.ends[1] == EndKind::Smooth,
             ];
-            let probes: Vec<[DVec2; 4]> = (0..=PROBES)
-                .map(|m| param.points(sil, w[0] + (w[1] - w[0]) * m as f64 / PROBES as f64))
+            let n = probe_count(c);
+            let probes: Vec<[DVec2; 4]> = (0..=n)
+                .map(|m| param.points(sil, w[0] + (w[1] - w[0]) * m as f64 / n as f64))
                 .collect();
             let curves: Vec<Vec<DVec2>> = (0..4)
                 .map(|k| probes.iter().map(|p| p[k]).collect())

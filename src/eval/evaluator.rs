@@ -96,7 +96,7 @@ impl Evaluator {
             }
             let around = global.around_face(f as u32);
             if around.has_face_repeating_a_vertex() {
-                let root = around.to_mesh(options)?;
+                let root = around.to_mesh(options);
                 let mut levels = vec![around];
                 for k in 0..(if size == 4 { 1 } else { size }) {
                     let node = if size == 4 {
@@ -108,17 +108,14 @@ impl Evaluator {
                     ev.roots.push(n);
                 }
             } else if size == 4 {
-                let node = match regular_patch(&global, f as u32, options) {
-                    Some(p) => ev.leaf(p),
-                    None => ev.build(around, 0)?,
-                };
+                let node = ev.build(&global, f as u32, 0)?;
                 let n = ev.push_node(node);
                 ev.roots.push(n);
             } else {
                 // A non-quad's sub-faces are its children after one refinement, in corner order.
                 let refined = refine_once(&around, options)?;
                 for k in 0..size {
-                    let node = ev.build(refined.around_face(k), 1)?;
+                    let node = ev.build(&refined, k, 1)?;
                     let n = ev.push_node(node);
                     ev.roots.push(n);
                 }
@@ -157,11 +154,15 @@ impl Evaluator {
         Node::Patch((self.patches.len() - 1) as u32)
     }
 
-    /// The node for face 0 of `nb`, refined down to [`CACHE_DEPTH`].
-    fn build(&mut self, nb: Neighbourhood, depth: u32) -> Result<Node> {
-        if let Some(p) = regular_patch(&nb, 0, &self.options) {
+    /// The node for face `f` of `nb` (a fragment holding the faces around `f`, or more; the
+    /// patch test only looks at `f`'s corners, whatever else the fragment holds), refined
+    /// down to [`CACHE_DEPTH`]. The fragment around `f` is cut out only when `f` is not
+    /// regular: most children of a refined face are, and the cut costs more than the test.
+    fn build(&mut self, nb: &Neighbourhood, f: u32, depth: u32) -> Result<Node> {
+        if let Some(p) = regular_patch(nb, f, &self.options) {
             return Ok(self.leaf(p));
         }
+        let nb = nb.around_face(f);
         if depth >= CACHE_DEPTH {
             self.deep.push(nb);
             return Ok(Node::Deep((self.deep.len() - 1) as u32));
@@ -170,7 +171,7 @@ impl Evaluator {
         let first = self.nodes.len() as u32;
         self.nodes.extend([Node::NoSurface; 4]);
         for q in 0..4u32 {
-            let child = self.build(refined.around_face(q), depth + 1)?;
+            let child = self.build(&refined, q, depth + 1)?;
             self.nodes[(first + q) as usize] = child;
         }
         Ok(Node::Split(first))
@@ -334,7 +335,7 @@ impl Evaluator {
 /// One level of refinement of a neighbourhood; the children of its face 0 are faces
 /// `0..n` of the result (Far's child order).
 fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourhood> {
-    let mesh = nb.to_mesh(options)?;
+    let mesh = nb.to_mesh(options);
     Ok(Neighbourhood::refined_from(
         nb,
         &refine_uniform(&mesh, options, 1)?,

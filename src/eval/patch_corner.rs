@@ -49,7 +49,7 @@ pub fn corner_limit(
     if has_semi_sharpness(nb, c) {
         return Ok(None);
     }
-    let samples = limit_vertex_samples(&nb.to_mesh(options)?, options)?;
+    let samples = limit_vertex_samples(&nb.to_mesh(options), options)?;
     let s = samples[c as usize];
     Ok(Some(LimitSample {
         position: s.position,

@@ -50,6 +50,16 @@ impl EdgeAt {
     }
 }
 
+/// The vertices after and before position `i` of `face` (branches, not `%`: this runs
+/// millions of times while an evaluator is built).
+#[inline]
+fn neighbours(face: &[u32], i: usize) -> (u32, u32) {
+    let n = face.len();
+    let next = if i + 1 == n { face[0] } else { face[i + 1] };
+    let prev = if i == 0 { face[n - 1] } else { face[i - 1] };
+    (next, prev)
+}
+
 /// The edges at vertex `c` and whether `c` repeats in one of its faces.
 struct VertexStar {
     edges: [EdgeAt; MAX_VALENCE],
@@ -65,13 +75,13 @@ impl VertexStar {
         };
         for &g in nb.vertex_faces(c) {
             let face = nb.face(g);
-            let n = face.len();
             let i = face.iter().position(|&x| x == c)?;
             if face[i + 1..].contains(&c) {
                 return None;
             }
-            star.add(face[(i + 1) % n], true)?;
-            star.add(face[(i + n - 1) % n], false)?;
+            let (next, prev) = neighbours(face, i);
+            star.add(next, true)?;
+            star.add(prev, false)?;
         }
         Some(star)
     }
@@ -128,16 +138,6 @@ fn is_infinite(s: f32) -> bool {
     s >= SHARPNESS_INFINITE
 }
 
-/// Classify corner `k` of quad `f`; a seemingly regular corner whose faces overlap in more
-/// than an edge is irregular (see [`faces_overlap`]).
-fn corner_kind(nb: &Neighbourhood, f: u32, k: usize, options: &SubdivOptions) -> CornerKind {
-    match corner_kind_by_counts(nb, f, k, options) {
-        CornerKind::Irregular => CornerKind::Irregular,
-        _ if faces_overlap(nb, nb.face(f)[k]) => CornerKind::Irregular,
-        kind => kind,
-    }
-}
-
 /// True when two faces at `c` share more than two vertices. That happens below a face that
 /// repeats a vertex: its children meet along two distinct edges joining the same pair of
 /// vertices, which a fragment keyed by vertex pairs cannot tell from one manifold edge.
@@ -154,19 +154,18 @@ fn faces_overlap(nb: &Neighbourhood, c: u32) -> bool {
     false
 }
 
+/// Classify corner `k` of quad `f`, whose vertex has the edges `star`, from the counts and
+/// tags of its edges and faces ([`regular_patch`] also checks [`faces_overlap`]).
 fn corner_kind_by_counts(
     nb: &Neighbourhood,
     f: u32,
     k: usize,
+    star: &VertexStar,
     options: &SubdivOptions,
 ) -> CornerKind {
     let face = nb.face(f);
     let c = face[k];
-    let next = face[(k + 1) % 4];
-    let prev = face[(k + 3) % 4];
-    let Some(star) = VertexStar::gather(nb, c) else {
-        return CornerKind::Irregular;
-    };
+    let (next, prev) = neighbours(face, k);
     let nfaces = nb.vertex_faces(c).len();
     let nedges = star.len;
     let mut infinite = 0;
@@ -248,9 +247,8 @@ fn across(nb: &Neighbourhood, f: u32, c: u32, d: u32) -> Option<(u32, u32)> {
             continue;
         }
         let face = nb.face(g);
-        let n = face.len();
         let i = face.iter().position(|&x| x == c)?;
-        let (nx, pv) = (face[(i + 1) % n], face[(i + n - 1) % n]);
+        let (nx, pv) = neighbours(face, i);
         let other = if nx == d {
             pv
         } else if pv == d {
@@ -274,15 +272,11 @@ fn is_single_fan(nb: &Neighbourhood, c: u32, f: u32, nfaces: usize) -> bool {
         let mut g = f;
         loop {
             let face = nb.face(g);
-            let n = face.len();
             let Some(i) = face.iter().position(|&x| x == c) else {
                 return false;
             };
-            let d = if forward {
-                face[(i + 1) % n]
-            } else {
-                face[(i + n - 1) % n]
-            };
+            let (next, prev) = neighbours(face, i);
+            let d = if forward { next } else { prev };
             match across(nb, g, c, d) {
                 Some((h, _)) if h == f => return visited == nfaces,
                 Some((h, _)) => {
@@ -317,18 +311,23 @@ pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Opt
         }
     }
     let mut kinds = [CornerKind::Irregular; 4];
-    for (k, kind) in kinds.iter_mut().enumerate() {
-        *kind = corner_kind(nb, f, k, options);
-        if *kind == CornerKind::Irregular {
+    let mut stars: [Option<VertexStar>; 4] = [None, None, None, None];
+    for k in 0..4 {
+        let star = VertexStar::gather(nb, face[k])?;
+        kinds[k] = corner_kind_by_counts(nb, f, k, &star, options);
+        // A seemingly regular corner whose faces overlap in more than an edge is irregular.
+        if kinds[k] == CornerKind::Irregular || faces_overlap(nb, face[k]) {
             return None;
         }
+        stars[k] = Some(star);
     }
     let mut boundary: BoundaryMask = 0;
     let mut pts = [DVec3::ZERO; 16];
     for k in 0..4 {
         let (c, d) = (face[k], face[(k + 1) % 4]);
         pts[CORNER_SLOTS[k]] = nb.position(c);
-        let sharp = VertexStar::gather(nb, c)
+        let sharp = stars[k]
+            .as_ref()
             .and_then(|s| s.find(d).map(|e| is_infinite(edge_sharpness(nb, c, e))))?;
         if sharp {
             boundary |= 1 << k;

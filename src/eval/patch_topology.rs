@@ -13,9 +13,13 @@ use std::collections::HashMap;
 
 use glam::DVec3;
 
-use crate::error::Result;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts};
 use crate::options::{PartialOptions, SubdivOptions};
+
+/// Largest fragment whose vertices [`Neighbourhood::around_face`] renumbers through a table
+/// as long as the fragment; from a larger one (a whole control mesh, a deeply refined
+/// fragment) it uses a hash map rather than fill such a table for every face.
+const DENSE_REMAP_LIMIT: usize = 4096;
 
 /// A mesh fragment with the adjacency the evaluator's patch tests need.
 #[derive(Debug, Clone, PartialEq)]
@@ -25,8 +29,10 @@ pub struct Neighbourhood {
     face_indices: Vec<u32>,
     vf_offsets: Vec<u32>,
     vf_faces: Vec<u32>,
-    /// Crease tags keyed by (smaller, larger) vertex index; absent = 0.
-    edge_tags: HashMap<(u32, u32), f32>,
+    /// Crease tags as ((smaller, larger) vertex index, sharpness), sorted by key, one per
+    /// key; absent = 0. A sorted list, not a hash map: fragments hold a handful of tags and
+    /// are built by the hundred thousand.
+    edge_tags: Vec<((u32, u32), f32)>,
     /// Corner tags, one per vertex (0 = none).
     vertex_tags: Vec<f32>,
     /// Vertices that descend from an edge point of a refinement: Far gives an edge's child
@@ -40,12 +46,24 @@ pub struct Neighbourhood {
 impl Neighbourhood {
     /// The whole of `mesh`.
     pub fn from_mesh(mesh: &Mesh) -> Neighbourhood {
-        let mut edge_tags = HashMap::with_capacity(mesh.creases().len());
-        for c in mesh.creases() {
-            let [a, b] = c.vertices;
-            // Far keeps the last value given for an edge; so do we.
-            edge_tags.insert((a.min(b), a.max(b)), c.sharpness);
-        }
+        let mut edge_tags: Vec<((u32, u32), f32)> = mesh
+            .creases()
+            .iter()
+            .map(|c| {
+                let [a, b] = c.vertices;
+                ((a.min(b), a.max(b)), c.sharpness)
+            })
+            .collect();
+        // Far keeps the last value given for an edge; so do we (the sort is stable, and
+        // `dedup_by` keeps the first of a run, into which the later value is copied).
+        edge_tags.sort_by_key(|&(key, _)| key);
+        edge_tags.dedup_by(|later, first| {
+            let same = later.0 == first.0;
+            if same {
+                first.1 = later.1;
+            }
+            same
+        });
         let mut vertex_tags = vec![0.0f32; mesh.num_vertices()];
         for c in mesh.corners() {
             vertex_tags[c.vertex as usize] = c.sharpness;
@@ -75,7 +93,7 @@ impl Neighbourhood {
         positions: Vec<DVec3>,
         face_offsets: Vec<u32>,
         face_indices: Vec<u32>,
-        edge_tags: HashMap<(u32, u32), f32>,
+        edge_tags: Vec<((u32, u32), f32)>,
         vertex_tags: Vec<f32>,
         edge_descendants: Vec<bool>,
     ) -> Neighbourhood {
@@ -135,7 +153,11 @@ impl Neighbourhood {
         if self.edge_tags.is_empty() {
             return 0.0;
         }
-        *self.edge_tags.get(&(a.min(b), a.max(b))).unwrap_or(&0.0)
+        let key = (a.min(b), a.max(b));
+        match self.edge_tags.binary_search_by_key(&key, |&(k, _)| k) {
+            Ok(i) => self.edge_tags[i].1,
+            Err(_) => 0.0,
+        }
     }
 
     /// The corner tag of vertex `v` (0 when untagged).
@@ -175,7 +197,11 @@ impl Neighbourhood {
                 }
             }
         }
-        let mut remap: HashMap<u32, u32> = HashMap::with_capacity(faces.len() * 4);
+        // Local index of each vertex of `self` (u32::MAX: not yet in the fragment), in a table
+        // when `self` is a small fragment, else in a hash map.
+        let dense = self.positions.len() <= DENSE_REMAP_LIMIT;
+        let mut remap = vec![u32::MAX; if dense { self.positions.len() } else { 0 }];
+        let mut sparse: HashMap<u32, u32> = HashMap::new();
         let mut globals: Vec<u32> = Vec::with_capacity(faces.len() * 2 + 4);
         let mut positions = Vec::with_capacity(faces.len() * 2 + 4);
         let mut vertex_tags = Vec::with_capacity(faces.len() * 2 + 4);
@@ -185,18 +211,31 @@ impl Neighbourhood {
         face_offsets.push(0u32);
         for &g in &faces {
             for &v in self.face(g) {
-                let local = *remap.entry(v).or_insert_with(|| {
+                let known = if dense {
+                    remap[v as usize]
+                } else {
+                    sparse.get(&v).copied().unwrap_or(u32::MAX)
+                };
+                let local = if known != u32::MAX {
+                    known
+                } else {
+                    let local = positions.len() as u32;
+                    if dense {
+                        remap[v as usize] = local;
+                    } else {
+                        sparse.insert(v, local);
+                    }
                     globals.push(v);
                     positions.push(self.positions[v as usize]);
                     vertex_tags.push(self.vertex_tags[v as usize]);
                     edge_descendants.push(self.edge_descendants[v as usize]);
-                    (positions.len() - 1) as u32
-                });
+                    local
+                };
                 face_indices.push(local);
             }
             face_offsets.push(face_indices.len() as u32);
         }
-        let mut edge_tags = HashMap::new();
+        let mut edge_tags = Vec::new();
         if !self.edge_tags.is_empty() {
             for w in face_offsets.windows(2) {
                 let face = &face_indices[w[0] as usize..w[1] as usize];
@@ -204,10 +243,13 @@ impl Neighbourhood {
                     let b = face[(i + 1) % face.len()];
                     let s = self.edge_tag(globals[a as usize], globals[b as usize]);
                     if s > 0.0 {
-                        edge_tags.insert((a.min(b), a.max(b)), s);
+                        edge_tags.push(((a.min(b), a.max(b)), s));
                     }
                 }
             }
+            // An interior edge is seen from both its faces, with the same tag.
+            edge_tags.sort_unstable_by_key(|&(key, _)| key);
+            edge_tags.dedup_by_key(|&mut (key, _)| key);
         }
         Neighbourhood::assemble(
             positions,
@@ -219,17 +261,18 @@ impl Neighbourhood {
         )
     }
 
-    /// This fragment as a validated [`Mesh`] with `options` attached, to be refined.
-    pub fn to_mesh(&self, options: &SubdivOptions) -> Result<Mesh> {
-        let mut creases: Vec<Crease> = self
+    /// This fragment as a [`Mesh`] with `options` attached, to be refined. Not validated
+    /// again: a fragment is cut from a valid mesh (its faces, and only the tags of its own
+    /// edges), which `from_parts` accepts (checked in debug builds).
+    pub fn to_mesh(&self, options: &SubdivOptions) -> Mesh {
+        let creases: Vec<Crease> = self
             .edge_tags
             .iter()
-            .map(|(&(a, b), &s)| Crease {
+            .map(|&((a, b), s)| Crease {
                 vertices: [a, b],
                 sharpness: s,
             })
             .collect();
-        creases.sort_by_key(|c| c.vertices);
         let corners = self
             .vertex_tags
             .iter()
@@ -241,7 +284,7 @@ impl Neighbourhood {
             })
             .collect();
         let face_sizes = self.face_offsets.windows(2).map(|w| w[1] - w[0]).collect();
-        Mesh::from_parts(MeshParts {
+        let parts = MeshParts {
             positions: self.positions.clone(),
             face_sizes,
             face_indices: self.face_indices.clone(),
@@ -253,6 +296,8 @@ impl Neighbourhood {
                 crease_method: Some(options.crease_method),
                 triangles: Some(options.triangles),
             },
-        })
+        };
+        debug_assert!(Mesh::from_parts(parts.clone()).is_ok());
+        Mesh::from_trusted_parts(parts, self.face_offsets.clone())
     }
 }

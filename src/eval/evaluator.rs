@@ -195,7 +195,7 @@ impl Evaluator {
         while levels.len() <= depth as usize {
             let refined = refine_uniform(root, &self.options, levels.len() as u32)?;
             let parent = &levels[levels.len() - 1];
-            levels.push(Neighbourhood::refined_from(parent, &refined));
+            levels.push(Neighbourhood::refined_from(parent, refined));
         }
         let nb = levels[depth as usize].around_face(index);
         if let Some(p) = regular_patch(&nb, 0, &self.options) {
@@ -338,7 +338,7 @@ fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourh
     let mesh = nb.to_mesh(options);
     Ok(Neighbourhood::refined_from(
         nb,
-        &refine_uniform(&mesh, options, 1)?,
+        refine_uniform(&mesh, options, 1)?,
     ))
 }
 

@@ -21,6 +21,8 @@
 //! on an interior non-manifold crease (refined vertices that descend from edge points are
 //! never sharpened from topology: [`Neighbourhood::is_edge_descendant`]).
 
+use std::borrow::Cow;
+
 use glam::DVec3;
 
 use super::bspline::{BicubicPatch, BoundaryMask};
@@ -60,19 +62,50 @@ fn neighbours(face: &[u32], i: usize) -> (u32, u32) {
     (next, prev)
 }
 
-/// The edges at vertex `c` and whether `c` repeats in one of its faces.
+/// Most faces at a vertex whose neighbours [`VertexStar`] keeps; more (only at odd
+/// non-manifold vertices) are read from the fragment again when needed.
+const FAN_CAPACITY: usize = MAX_VALENCE;
+
+/// A face at a vertex `c` with the vertices after and before `c` in it.
+#[derive(Debug, Clone, Copy, Default)]
+struct FanFace {
+    face: u32,
+    next: u32,
+    prev: u32,
+}
+
+/// The edges at vertex `c`, and its faces in `vertex_faces` order with their neighbours of
+/// `c` (the patch test walks them many times; reading them off the fragment each time costs
+/// more than the rest of the test).
 struct VertexStar {
     edges: [EdgeAt; MAX_VALENCE],
     len: usize,
+    fan: [FanFace; FAN_CAPACITY],
+    /// Faces at `c`; all of them are in `fan` when at most [`FAN_CAPACITY`].
+    fan_len: usize,
 }
 
 impl VertexStar {
-    /// `None` when `c` is too complex for a regular patch (repeated in a face, too many edges).
-    fn gather(nb: &Neighbourhood, c: u32) -> Option<VertexStar> {
-        let mut star = VertexStar {
+    fn new() -> VertexStar {
+        VertexStar {
             edges: [EdgeAt::default(); MAX_VALENCE],
             len: 0,
-        };
+            fan: [FanFace::default(); FAN_CAPACITY],
+            fan_len: 0,
+        }
+    }
+
+    /// `None` when `c` is too complex for a regular patch (repeated in a face, too many edges).
+    fn gather(nb: &Neighbourhood, c: u32) -> Option<VertexStar> {
+        let mut star = VertexStar::new();
+        star.fill(nb, c)?;
+        Some(star)
+    }
+
+    /// [`VertexStar::gather`] into `self` (reused: a star is a few hundred bytes).
+    fn fill(&mut self, nb: &Neighbourhood, c: u32) -> Option<()> {
+        self.len = 0;
+        self.fan_len = 0;
         for &g in nb.vertex_faces(c) {
             let face = nb.face(g);
             let i = face.iter().position(|&x| x == c)?;
@@ -80,10 +113,38 @@ impl VertexStar {
                 return None;
             }
             let (next, prev) = neighbours(face, i);
-            star.add(next, true)?;
-            star.add(prev, false)?;
+            self.add(next, true)?;
+            self.add(prev, false)?;
+            if let Some(slot) = self.fan.get_mut(self.fan_len) {
+                *slot = FanFace {
+                    face: g,
+                    next,
+                    prev,
+                };
+            }
+            self.fan_len += 1;
         }
-        Some(star)
+        Some(())
+    }
+
+    /// The faces at `c` (this star's vertex) in `vertex_faces` order, from the stored fan
+    /// or, past its capacity, read from the fragment again.
+    fn faces(&self, nb: &Neighbourhood, c: u32) -> Cow<'_, [FanFace]> {
+        if self.fan_len <= FAN_CAPACITY {
+            return Cow::Borrowed(&self.fan[..self.fan_len]);
+        }
+        let read = nb.vertex_faces(c).iter().map(|&g| {
+            let face = nb.face(g);
+            // `c` is in each of its faces exactly once (else there is no star).
+            let i = face.iter().position(|&x| x == c).unwrap_or(0);
+            let (next, prev) = neighbours(face, i);
+            FanFace {
+                face: g,
+                next,
+                prev,
+            }
+        });
+        Cow::Owned(read.collect())
     }
 
     fn add(&mut self, other: u32, outgoing: bool) -> Option<()> {
@@ -93,7 +154,11 @@ impl VertexStar {
                 if self.len == MAX_VALENCE {
                     return None;
                 }
-                self.edges[self.len].other = other;
+                self.edges[self.len] = EdgeAt {
+                    other,
+                    out: 0,
+                    inc: 0,
+                };
                 self.len += 1;
                 self.len - 1
             }
@@ -144,9 +209,14 @@ fn is_infinite(s: f32) -> bool {
 fn faces_overlap(nb: &Neighbourhood, c: u32) -> bool {
     let faces = nb.vertex_faces(c);
     for (i, &a) in faces.iter().enumerate() {
+        let face_a = nb.face(a);
         for &b in &faces[i + 1..] {
-            let shared = nb.face(a).iter().filter(|x| nb.face(b).contains(x)).count();
-            if a == b || shared > 2 {
+            if a == b {
+                return true;
+            }
+            let face_b = nb.face(b);
+            let mut shared = face_a.iter().filter(|x| face_b.contains(x));
+            if shared.nth(2).is_some() {
                 return true;
             }
         }
@@ -180,7 +250,7 @@ fn corner_kind_by_counts(
         boundary_edges += usize::from(e.count() == 1);
         nonmanifold_edges += usize::from(e.count() != 1 && !e.is_manifold());
     }
-    let manifold = nonmanifold_edges == 0 && is_single_fan(nb, c, f, nfaces);
+    let manifold = nonmanifold_edges == 0 && is_single_fan(nb, star, c, f, nfaces);
     let mut vertex = nb.vertex_tag(c);
     if nfaces == 1 && nedges == 2 && options.boundary == BoundaryInterpolation::EdgeAndCorner {
         vertex = SHARPNESS_INFINITE;
@@ -218,7 +288,7 @@ fn corner_kind_by_counts(
             // The sector on F's side: F and the quad across F's smooth edge, which must
             // itself end on the other sharp edge.
             let smooth_end = if sharp_next { prev } else { next };
-            match across(nb, f, c, smooth_end) {
+            match across(nb, star, f, c, smooth_end) {
                 Some((g, beyond)) if nb.face(g).len() == 4 => {
                     let e = star.find(beyond);
                     if e.is_some_and(|e| is_infinite(edge_sharpness(nb, c, e))) {
@@ -239,45 +309,40 @@ fn all_quads(nb: &Neighbourhood, c: u32) -> bool {
 }
 
 /// The face other than `f` on edge `(c, d)` and, in it, the vertex next to `c` that is not
-/// `d`. `None` unless the edge has exactly one other face.
-fn across(nb: &Neighbourhood, f: u32, c: u32, d: u32) -> Option<(u32, u32)> {
+/// `d`. `None` unless the edge has exactly one other face. `star` is `c`'s.
+fn across(nb: &Neighbourhood, star: &VertexStar, f: u32, c: u32, d: u32) -> Option<(u32, u32)> {
     let mut found = None;
-    for &g in nb.vertex_faces(c) {
-        if g == f {
+    for g in star.faces(nb, c).iter() {
+        if g.face == f {
             continue;
         }
-        let face = nb.face(g);
-        let i = face.iter().position(|&x| x == c)?;
-        let (nx, pv) = neighbours(face, i);
-        let other = if nx == d {
-            pv
-        } else if pv == d {
-            nx
+        let other = if g.next == d {
+            g.prev
+        } else if g.prev == d {
+            g.next
         } else {
             continue;
         };
         if found.is_some() {
             return None;
         }
-        found = Some((g, other));
+        found = Some((g.face, other));
     }
     found
 }
 
-/// True when the faces around `c` form one fan (walking across manifold edges from `f`
-/// reaches all `nfaces` of them).
-fn is_single_fan(nb: &Neighbourhood, c: u32, f: u32, nfaces: usize) -> bool {
+/// True when the faces around `c` (whose star is `star`) form one fan (walking across
+/// manifold edges from `f` reaches all `nfaces` of them).
+fn is_single_fan(nb: &Neighbourhood, star: &VertexStar, c: u32, f: u32, nfaces: usize) -> bool {
     let mut visited = 1;
     for forward in [true, false] {
         let mut g = f;
         loop {
-            let face = nb.face(g);
-            let Some(i) = face.iter().position(|&x| x == c) else {
+            let Some(&at) = star.faces(nb, c).iter().find(|e| e.face == g) else {
                 return false;
             };
-            let (next, prev) = neighbours(face, i);
-            let d = if forward { next } else { prev };
-            match across(nb, g, c, d) {
+            let d = if forward { at.next } else { at.prev };
+            match across(nb, star, g, c, d) {
                 Some((h, _)) if h == f => return visited == nfaces,
                 Some((h, _)) => {
                     visited += 1;
@@ -311,30 +376,30 @@ pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Opt
         }
     }
     let mut kinds = [CornerKind::Irregular; 4];
-    let mut stars: [Option<VertexStar>; 4] = [None, None, None, None];
+    let mut stars: [VertexStar; 4] = std::array::from_fn(|_| VertexStar::new());
     for k in 0..4 {
-        let star = VertexStar::gather(nb, face[k])?;
-        kinds[k] = corner_kind_by_counts(nb, f, k, &star, options);
+        stars[k].fill(nb, face[k])?;
+        kinds[k] = corner_kind_by_counts(nb, f, k, &stars[k], options);
         // A seemingly regular corner whose faces overlap in more than an edge is irregular.
         if kinds[k] == CornerKind::Irregular || faces_overlap(nb, face[k]) {
             return None;
         }
-        stars[k] = Some(star);
     }
     let mut boundary: BoundaryMask = 0;
     let mut pts = [DVec3::ZERO; 16];
     for k in 0..4 {
         let (c, d) = (face[k], face[(k + 1) % 4]);
+        let (star_c, star_d) = (&stars[k], &stars[(k + 1) % 4]);
         pts[CORNER_SLOTS[k]] = nb.position(c);
-        let sharp = stars[k]
-            .as_ref()
-            .and_then(|s| s.find(d).map(|e| is_infinite(edge_sharpness(nb, c, e))))?;
+        let sharp = star_c
+            .find(d)
+            .map(|e| is_infinite(edge_sharpness(nb, c, e)))?;
         if sharp {
             boundary |= 1 << k;
             continue;
         }
-        let (_, at_c) = across(nb, f, c, d)?;
-        let (_, at_d) = across(nb, f, d, c)?;
+        let (_, at_c) = across(nb, star_c, f, c, d)?;
+        let (_, at_d) = across(nb, star_d, f, d, c)?;
         pts[ACROSS_SLOTS[k].0] = nb.position(at_c);
         pts[ACROSS_SLOTS[k].1] = nb.position(at_d);
     }
@@ -342,9 +407,9 @@ pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Opt
         if kinds[k] != CornerKind::Smooth {
             continue;
         }
-        let c = face[k];
-        let (g_next, _) = across(nb, f, c, face[(k + 1) % 4])?;
-        let (g_prev, _) = across(nb, f, c, face[(k + 3) % 4])?;
+        let (c, star) = (face[k], &stars[k]);
+        let (g_next, _) = across(nb, star, f, c, face[(k + 1) % 4])?;
+        let (g_prev, _) = across(nb, star, f, c, face[(k + 3) % 4])?;
         let g = *nb
             .vertex_faces(c)
             .iter()

@@ -46,6 +46,11 @@ pub struct Neighbourhood {
 impl Neighbourhood {
     /// The whole of `mesh`.
     pub fn from_mesh(mesh: &Mesh) -> Neighbourhood {
+        Neighbourhood::from_owned_mesh(mesh.clone())
+    }
+
+    /// [`Neighbourhood::from_mesh`] taking the mesh's arrays instead of copying them.
+    fn from_owned_mesh(mesh: Mesh) -> Neighbourhood {
         let mut edge_tags: Vec<((u32, u32), f32)> = mesh
             .creases()
             .iter()
@@ -68,21 +73,24 @@ impl Neighbourhood {
         for c in mesh.corners() {
             vertex_tags[c.vertex as usize] = c.sharpness;
         }
+        let nv = mesh.num_vertices();
+        let face_offsets = mesh.face_offsets().to_vec();
+        let parts = mesh.into_parts();
         Neighbourhood::assemble(
-            mesh.positions().to_vec(),
-            mesh.face_offsets().to_vec(),
-            mesh.face_indices().to_vec(),
+            parts.positions,
+            face_offsets,
+            parts.face_indices,
             edge_tags,
             vertex_tags,
-            vec![false; mesh.num_vertices()],
+            vec![false; nv],
         )
     }
 
     /// `child`, the one-level refinement of `parent` (as a mesh, vertices in Far's default
     /// order: children of vertices, of faces, then of edges), keeping track of which
     /// vertices descend from edge points.
-    pub fn refined_from(parent: &Neighbourhood, child: &Mesh) -> Neighbourhood {
-        let mut nb = Neighbourhood::from_mesh(child);
+    pub fn refined_from(parent: &Neighbourhood, child: Mesh) -> Neighbourhood {
+        let mut nb = Neighbourhood::from_owned_mesh(child);
         let nv = parent.positions.len();
         nb.edge_descendants[..nv].copy_from_slice(&parent.edge_descendants);
         nb.edge_descendants[nv + parent.num_faces()..].fill(true);

@@ -80,6 +80,8 @@ install_dependencies() {
 
 rust_fmt() { cargo fmt --check; }
 rust_clippy() { cargo clippy --all-targets -- -D warnings; }
+# Broken intra-doc links and links from public docs to private items fail the run.
+rust_doc() { RUSTDOCFLAGS="-D warnings" cargo doc --no-deps; }
 # Release: the numeric tests are heavy, and CMake reuses the same release library below.
 rust_test() { cargo test --release; }
 
@@ -152,6 +154,7 @@ step "dependencies" install_dependencies
 export PATH="$HOME/.cargo/bin:$PATH"
 step "cargo fmt --check" rust_fmt
 step "cargo clippy --all-targets -- -D warnings" rust_clippy
+step "cargo doc (warnings are errors)" rust_doc
 step "cargo test --release" rust_test
 step "cmake configure + build ($BUILD_DIR)" cmake_build
 step "ctest (C++ harness vs OpenSubdiv and OpenMesh)" ctest_all

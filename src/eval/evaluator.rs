@@ -27,9 +27,9 @@ use crate::refine::refine_uniform;
 /// Depth to which irregular faces are refined and cached at construction.
 pub const CACHE_DEPTH: u32 = 5;
 
-/// Depth to which the faces around a face that repeats a vertex are cached (see
-/// [`Evaluator::build_from_root`]), as long as the refined fragment stays within
-/// [`DEGENERATE_BUDGET`] faces.
+/// Depth to which the faces around a face that repeats a vertex are cached at construction,
+/// refining the whole fragment around it from its base level each time, as long as that
+/// fragment stays within 16,384 faces.
 pub const DEGENERATE_DEPTH: u32 = 6;
 
 /// Largest refined fragment (faces) [`Evaluator::build_from_root`] builds.

@@ -4,7 +4,7 @@
 //! - infinitely sharp corners (vertex sharpness infinite, three or more infinitely sharp
 //!   edges, boundary corners under edge-and-corner, non-manifold vertices as Far sharpens
 //!   them) stay where they are;
-//! - a manifold vertex's one-ring is refined with OpenSubdiv's rules (see [`super::vertex_ring`])
+//! - a manifold vertex's one-ring is refined with OpenSubdiv's rules (private module `vertex_ring`)
 //!   until the sharpness around it is 0 or infinite and every face is a quad, then the limit
 //!   mask of its rule is applied: smooth `(n² v + 4 Σ e + Σ f) / (n (n + 5))`, crease
 //!   `(e_a + 4 v + e_b) / 6`, and for darts (exactly one sharp edge), which have no closed

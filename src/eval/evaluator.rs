@@ -59,7 +59,9 @@ pub struct Evaluator {
     mesh: Mesh,
     options: SubdivOptions,
     ptex: PtexFaces,
-    roots: Vec<u32>,
+    /// The root node of each parametric face (held here rather than in `nodes`: one memory
+    /// access less per evaluation).
+    roots: Vec<Node>,
     nodes: Vec<Node>,
     patches: Vec<BicubicPatch>,
     deep: Vec<Neighbourhood>,
@@ -89,8 +91,7 @@ impl Evaluator {
             if no_surface[f] {
                 let count = if size == 4 { 1 } else { size };
                 for _ in 0..count {
-                    let n = ev.push_node(Node::NoSurface);
-                    ev.roots.push(n);
+                    ev.roots.push(Node::NoSurface);
                 }
                 continue;
             }
@@ -104,20 +105,17 @@ impl Evaluator {
                     } else {
                         ev.build_from_root(&root, &mut levels, 1, k)?
                     };
-                    let n = ev.push_node(node);
-                    ev.roots.push(n);
+                    ev.roots.push(node);
                 }
             } else if size == 4 {
                 let node = ev.build(&global, f as u32, 0)?;
-                let n = ev.push_node(node);
-                ev.roots.push(n);
+                ev.roots.push(node);
             } else {
                 // A non-quad's sub-faces are its children after one refinement, in corner order.
                 let refined = refine_once(&around, options)?;
                 for k in 0..size {
                     let node = ev.build(&refined, k, 1)?;
-                    let n = ev.push_node(node);
-                    ev.roots.push(n);
+                    ev.roots.push(node);
                 }
             }
         }
@@ -142,11 +140,6 @@ impl Evaluator {
     /// Number of parametric faces: the valid range of `face` in [`Evaluator::evaluate`].
     pub fn num_parametric_faces(&self) -> usize {
         self.ptex.len()
-    }
-
-    fn push_node(&mut self, n: Node) -> u32 {
-        self.nodes.push(n);
-        (self.nodes.len() - 1) as u32
     }
 
     fn leaf(&mut self, p: BicubicPatch) -> Node {
@@ -235,7 +228,7 @@ impl Evaluator {
         }
         let (mut node, mut s, mut t, mut scale) = (root, u, v, 1.0);
         loop {
-            match self.nodes[node as usize] {
+            match node {
                 Node::Patch(p) => {
                     let (position, ds, dt) = self.patches[p as usize].evaluate(s, t);
                     return Ok(LimitSample {
@@ -246,7 +239,7 @@ impl Evaluator {
                 }
                 Node::Split(first) => {
                     let (q, cs, ct) = quadrant(s, t);
-                    node = first + q;
+                    node = self.nodes[(first + q) as usize];
                     (s, t, scale) = (cs, ct, scale * 2.0);
                 }
                 Node::Deep(d) => return self.evaluate_deep(&self.deep[d as usize], s, t, scale),

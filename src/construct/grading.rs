@@ -37,11 +37,34 @@ pub fn graded(u: f64, poles: [bool; 2]) -> f64 {
     }
 }
 
+/// Parameters of the `rings + 1` rings of a stretch `range` of a curve parameter (ends
+/// included) between breakpoints: uniform in the curvature-weighted length of the curves
+/// traced by `points` ([`crate::construct::equidistribute`]), graded towards a smooth pole at
+/// the start when `poles[0]` and at the end when `poles[1]`.
+pub fn ring_parameters<const K: usize>(
+    range: [f64; 2],
+    rings: usize,
+    poles: [bool; 2],
+    points: impl Fn(f64) -> [DVec2; K],
+) -> Vec<f64> {
+    let [a, b] = range;
+    let n = probe_count(rings);
+    let probes: Vec<[DVec2; K]> = (0..=n)
+        .map(|m| points(a + (b - a) * m as f64 / n as f64))
+        .collect();
+    let curves: Vec<Vec<DVec2>> = (0..K)
+        .map(|k| probes.iter().map(|p| p[k]).collect())
+        .collect();
+    let eq = Equidistribution::new(&curves);
+    (0..=rings)
+        .map(|i| a + (b - a) * eq.inverse(graded(i as f64 / rings as f64, poles)))
+        .collect()
+}
+
 /// Replace curve samples (uniform within each run between corner samples, first and last
-/// sample included) by samples equidistributing the curvature-weighted length of each run
-/// ([`crate::construct::equidistribute`]) of the curve `point(s)`, the first run graded
-/// towards a smooth pole at the first sample when `poles[0]`, and the last run towards the
-/// last sample when `poles[1]`.
+/// sample included) by [`ring_parameters`] of each run of the curve `point(s)`, the first run
+/// graded towards a smooth pole at the first sample when `poles[0]`, and the last run towards
+/// the last sample when `poles[1]`.
 pub fn grade_samples(samples: &mut [CurveSample], poles: [bool; 2], point: impl Fn(f64) -> DVec2) {
     let n = samples.len();
     let breaks: Vec<usize> = (0..n)
@@ -50,15 +73,10 @@ pub fn grade_samples(samples: &mut [CurveSample], poles: [bool; 2], point: impl 
     let runs = breaks.len().saturating_sub(1);
     for (r, w) in breaks.windows(2).enumerate() {
         let ends = [r == 0 && poles[0], r + 1 == runs && poles[1]];
-        let (s0, s1) = (samples[w[0]].s, samples[w[1]].s);
-        let n = probe_count(w[1] - w[0]);
-        let probes: Vec<DVec2> = (0..=n)
-            .map(|m| point(s0 + (s1 - s0) * m as f64 / n as f64))
-            .collect();
-        let eq = Equidistribution::new(&[probes]);
-        let c = (w[1] - w[0]) as f64;
-        for (i, sample) in samples[w[0] + 1..w[1]].iter_mut().enumerate() {
-            sample.s = s0 + (s1 - s0) * eq.inverse(graded((i + 1) as f64 / c, ends));
+        let range = [samples[w[0]].s, samples[w[1]].s];
+        let s = ring_parameters(range, w[1] - w[0], ends, |s| [point(s)]);
+        for (sample, &s) in samples[w[0] + 1..w[1]].iter_mut().zip(&s[1..]) {
+            sample.s = s;
         }
     }
 }

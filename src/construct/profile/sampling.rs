@@ -7,12 +7,9 @@
 //! in a segment ending at a smooth pole ([`crate::construct::grading`]); a ring passes
 //! through every breakpoint.
 
-use glam::DVec2;
-
 use super::param::CommonParam;
 use super::silhouettes::{EndKind, Silhouettes};
-use crate::construct::equidistribute::{probe_count, Equidistribution};
-use crate::construct::grading::graded;
+use crate::construct::grading::ring_parameters;
 use crate::error::{Error, Result};
 
 /// The rings of a profile model.
@@ -89,18 +86,8 @@ impl Rings {
                 j == 0 && sil.ends[0] == EndKind::Smooth,
                 j + 1 == segs && sil.ends[1] == EndKind::Smooth,
             ];
-            let n = probe_count(c);
-            let probes: Vec<[DVec2; 4]> = (0..=n)
-                .map(|m| param.points(sil, w[0] + (w[1] - w[0]) * m as f64 / n as f64))
-                .collect();
-            let curves: Vec<Vec<DVec2>> = (0..4)
-                .map(|k| probes.iter().map(|p| p[k]).collect())
-                .collect();
-            let eq = Equidistribution::new(&curves);
-            for i in 0..c {
-                let u = eq.inverse(graded(i as f64 / c as f64, poles));
-                t.push(w[0] + (w[1] - w[0]) * u);
-            }
+            let rings = ring_parameters([w[0], w[1]], c, poles, |t| param.points(sil, t));
+            t.extend_from_slice(&rings[..c]);
         }
         ring_of_break.push(t.len());
         t.push(1.0);

@@ -142,6 +142,14 @@ impl Evaluator {
         self.ptex.len()
     }
 
+    /// Whether parametric face `face` has a limit surface (false for holes, faces without
+    /// surface under boundary interpolation "none", and out-of-range indices).
+    pub fn has_limit_surface(&self, face: u32) -> bool {
+        self.roots
+            .get(face as usize)
+            .is_some_and(|&r| r != Node::NoSurface)
+    }
+
     fn leaf(&mut self, p: BicubicPatch) -> Node {
         self.patches.push(p);
         Node::Patch((self.patches.len() - 1) as u32)
@@ -393,4 +401,4 @@ fn faces_without_surface(mesh: &Mesh, nb: &Neighbourhood, options: &SubdivOption
 
 #[cfg(test)]
 #[path = "evaluator_tests.rs"]
-mod tests;
+pub(crate) mod tests;

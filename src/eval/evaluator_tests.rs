@@ -9,7 +9,7 @@ use crate::options::{BoundaryInterpolation, SubdivOptions};
 
 /// An `n × n` grid of unit quads, vertex `(i, j)` at `(i, j, height(i, j))`, face `(i, j)`
 /// = index `j * n + i` with corner 0 at `(i, j)`.
-fn grid(n: usize, height: impl Fn(f64, f64) -> f64) -> MeshParts {
+pub(crate) fn grid(n: usize, height: impl Fn(f64, f64) -> f64) -> MeshParts {
     let mut positions = Vec::new();
     for j in 0..=n {
         for i in 0..=n {

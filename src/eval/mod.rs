@@ -7,11 +7,13 @@
 //! - [`Evaluator`] ([`evaluator`]): the limit surface at any `(face, u, v)`, addressed as
 //!   [`ptex`] documents; [`bspline`], [`patch_regular`], [`patch_topology`]: regular bicubic
 //!   patches, when a face is one, and the neighbourhoods refined until it is;
+//! - [`folds`]: where the limit surface folds (its normal turns through zero and back);
 //! - [`StencilTable`], [`LimitSample`]: the shared result types.
 
 pub mod bspline;
 mod dense;
 pub mod evaluator;
+pub mod folds;
 pub mod patch_corner;
 pub mod patch_regular;
 pub mod patch_topology;

@@ -1,0 +1,499 @@
+//! Folds of the limit surface: where the normal `du × dv` turns through zero and comes back
+//! reversed, so that the surface doubles back on itself inside a face.
+//!
+//! [`find_folds`] samples every parametric (Ptex) face that has a limit surface on a lattice
+//! of `samples_per_edge × samples_per_edge` points (corners and edges included) and refines
+//! the lattice, by halving cells, up to `adaptive_depth` times: in cells next to an
+//! extraordinary or non-smooth corner of the face, and in cells whose corner normals turn by
+//! more than `refine_turn_deg` or oppose the face's reference normal. Every sample uses the
+//! evaluator's exact derivatives; the normal is `du × dv` of the face's own parameterization,
+//! so a crease or corner, where the normal jumps *between* faces, never shows.
+//!
+//! At a face corner on a smooth interior vertex the sample is the evaluator's exact limit
+//! there (at an extraordinary vertex the limit tangent plane of [`super::vertex_limit`],
+//! since `du × dv` of the limit parameterization vanishes or diverges there). At a corner
+//! that is not a smooth interior point (boundary, sharp edge or vertex, non-manifold), each
+//! face has its own one-sided normal while the vertex limit reports one face's, so the
+//! sample is taken [`CORNER_INSET`] inside the face instead.
+//!
+//! The criterion. The *reference normal* of a Ptex face is its area-weighted mean normal,
+//! `∫ du × dv du dv` by the trapezoid rule on the base lattice (samples whose derivative
+//! lengths are a convention, at irregular corners, left out; the centre sample's normal if
+//! that integral vanishes). A face **folds** when
+//! - a sample's unit normal makes more than 90° with the reference normal (it is reversed), or
+//! - two corner samples of a cell of the finest lattice (after all refinement) are more than
+//!   90° apart: the normal jumps there however fine the sampling, as it does where `du × dv`
+//!   passes through zero (a smooth normal field turns less the finer the cell; a fold line
+//!   keeps a jump of nearly 180°).
+//!
+//! Two samples far apart in one face may legitimately be more than 90° apart (on a coarse
+//! cube's limit surface opposite corners of a face are 109° apart), so that is not a fold.
+//! A face spanning more than 180° of normal directions without folding would be reported;
+//! no practical mesh has one.
+
+use std::collections::HashMap;
+
+use glam::DVec3;
+
+use super::Evaluator;
+use crate::error::{Error, Result};
+use crate::topology::Level;
+
+/// Offset (in the face's `u` and `v`) at which a corner that is not a smooth interior point
+/// is sampled: the face's one-sided normal, as close to the corner as makes no difference.
+pub const CORNER_INSET: f64 = 1.0 / 1_048_576.0;
+
+/// Largest `samples_per_edge` accepted.
+const MAX_SAMPLES_PER_EDGE: usize = 1025;
+
+/// Largest `adaptive_depth` accepted.
+const MAX_ADAPTIVE_DEPTH: usize = 16;
+
+/// How densely [`find_folds`] samples.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FoldSettings {
+    /// Samples along each edge of a parametric face's base lattice (at least 2; default 9).
+    pub samples_per_edge: usize,
+    /// How many times a lattice cell may be halved: next to extraordinary or non-smooth
+    /// corners, and where the normal turns by more than `refine_turn_deg` across a cell or
+    /// opposes the reference normal (at most 16; default 4).
+    pub adaptive_depth: usize,
+    /// A cell whose corner normals turn by more than this (degrees) is refined (default 45).
+    pub refine_turn_deg: f64,
+}
+
+impl Default for FoldSettings {
+    fn default() -> Self {
+        FoldSettings {
+            samples_per_edge: 9,
+            adaptive_depth: 4,
+            refine_turn_deg: 45.0,
+        }
+    }
+}
+
+/// One control face whose limit surface folds.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct FoldedFace {
+    /// Base (control) face index.
+    pub face: usize,
+    /// The Ptex face (of this control face) with the largest reversal.
+    pub ptex_face: usize,
+    /// Samples whose normal is more than 90° from their Ptex face's reference normal.
+    pub reversed_samples: usize,
+    /// Largest angle (degrees) between a sample's normal and its Ptex face's reference normal.
+    pub worst_reversal_deg: f64,
+    /// Largest angle (degrees) between the corner normals of one finest lattice cell.
+    pub max_turn_deg: f64,
+}
+
+/// What [`find_folds`] found.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct FoldReport {
+    /// The folded control faces, in face order.
+    pub folded_faces: Vec<FoldedFace>,
+    /// Largest angle (degrees), over all samples, between a sample's normal and its Ptex
+    /// face's reference normal; above 90 the surface is reversed there.
+    pub worst_reversal_deg: f64,
+    /// Where that angle is: (Ptex face, u, v); `None` when no sample has a normal.
+    pub worst_at: Option<(usize, f64, f64)>,
+    /// Minimum over samples of `(du × dv) · n_ref / typical |du × dv|` of the sample's Ptex
+    /// face (`n_ref` the unit reference normal, typical the trapezoid mean of `|du × dv|` on
+    /// the base lattice); negative where the surface is reversed. Samples at irregular
+    /// corners, whose derivative lengths are a convention, are left out; near an
+    /// extraordinary vertex of valence above 4 the value tends to 0 by nature.
+    /// `+inf` when no sample counts.
+    pub min_relative_jacobian: f64,
+    /// Parametric (Ptex) faces checked (faces without limit surface are skipped).
+    pub faces_checked: usize,
+    /// Limit evaluations made.
+    pub samples: usize,
+}
+
+impl FoldReport {
+    /// True when no face folds.
+    pub fn is_fold_free(&self) -> bool {
+        self.folded_faces.is_empty()
+    }
+
+    /// The folded control faces' indices, ascending.
+    pub fn folded_face_indices(&self) -> Vec<usize> {
+        self.folded_faces.iter().map(|f| f.face).collect()
+    }
+}
+
+/// Sample the limit surface of `evaluator` as [`FoldSettings`] says and report its folds
+/// (the criterion is in the [module documentation](self)).
+///
+/// Errors: [`Error::InvalidArgument`] for `samples_per_edge` outside `2..=1025`,
+/// `adaptive_depth` above 16 or a `refine_turn_deg` outside `(0, 180]`; errors of the
+/// evaluation ([`Error::NumericalFailure`]).
+pub fn find_folds(evaluator: &Evaluator, settings: &FoldSettings) -> Result<FoldReport> {
+    check_settings(settings)?;
+    let mesh = evaluator.mesh();
+    let level = Level::from_mesh_with_options(mesh, evaluator.options());
+    let mut report = FoldReport {
+        folded_faces: Vec::new(),
+        worst_reversal_deg: 0.0,
+        worst_at: None,
+        min_relative_jacobian: f64::INFINITY,
+        faces_checked: 0,
+        samples: 0,
+    };
+    for ptex in 0..evaluator.num_parametric_faces() as u32 {
+        if !evaluator.has_limit_surface(ptex) {
+            continue;
+        }
+        let Some((base, sub)) = evaluator.ptex_faces().locate(ptex) else {
+            continue;
+        };
+        let corners = corner_kinds(&level, mesh.face(base as usize), sub);
+        let face = FaceCheck::run(evaluator, ptex, corners, settings)?;
+        report.faces_checked += 1;
+        report.samples += face.samples;
+        report.min_relative_jacobian = report.min_relative_jacobian.min(face.min_rel_jacobian);
+        if let Some(at) = face.worst_at {
+            if report.worst_at.is_none() || face.worst_angle > report.worst_reversal_deg {
+                report.worst_reversal_deg = face.worst_angle;
+                report.worst_at = Some((ptex as usize, at.0, at.1));
+            }
+        }
+        if face.reversed > 0 || face.max_turn > 90.0 {
+            merge_folded(
+                &mut report.folded_faces,
+                base as usize,
+                ptex as usize,
+                &face,
+            );
+        }
+    }
+    Ok(report)
+}
+
+fn check_settings(s: &FoldSettings) -> Result<()> {
+    if !(2..=MAX_SAMPLES_PER_EDGE).contains(&s.samples_per_edge) {
+        return Err(Error::invalid_argument(format!(
+            "samples per edge {} is outside 2..={MAX_SAMPLES_PER_EDGE}",
+            s.samples_per_edge
+        )));
+    }
+    if s.adaptive_depth > MAX_ADAPTIVE_DEPTH {
+        return Err(Error::invalid_argument(format!(
+            "adaptive depth {} is above {MAX_ADAPTIVE_DEPTH}",
+            s.adaptive_depth
+        )));
+    }
+    if !(s.refine_turn_deg > 0.0 && s.refine_turn_deg <= 180.0) {
+        return Err(Error::invalid_argument(format!(
+            "refinement turn {} degrees is outside (0, 180]",
+            s.refine_turn_deg
+        )));
+    }
+    Ok(())
+}
+
+/// Record a folded Ptex face under its control face (sub-faces of one face are consecutive).
+fn merge_folded(list: &mut Vec<FoldedFace>, base: usize, ptex: usize, f: &FaceCheck) {
+    if let Some(last) = list.last_mut().filter(|l| l.face == base) {
+        last.reversed_samples += f.reversed;
+        last.max_turn_deg = last.max_turn_deg.max(f.max_turn);
+        if f.worst_angle > last.worst_reversal_deg {
+            last.worst_reversal_deg = f.worst_angle;
+            last.ptex_face = ptex;
+        }
+        return;
+    }
+    list.push(FoldedFace {
+        face: base,
+        ptex_face: ptex,
+        reversed_samples: f.reversed,
+        worst_reversal_deg: f.worst_angle,
+        max_turn_deg: f.max_turn,
+    });
+}
+
+/// How a corner of a Ptex face is sampled.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct CornerKind {
+    /// A smooth interior point: evaluate exactly there (else [`CORNER_INSET`] inside).
+    exact: bool,
+    /// Not a regular smooth point: refine the lattice next to it, and leave its derivative
+    /// lengths (a convention, or degenerate) out of the Jacobian statistics.
+    irregular: bool,
+}
+
+fn vertex_kind(level: &Level, v: u32) -> CornerKind {
+    let v = v as usize;
+    let smooth = !level.is_vertex_boundary(v)
+        && !level.is_vertex_non_manifold(v)
+        && level.vertex_sharpness(v) == 0.0
+        && level
+            .vertex_edges(v)
+            .iter()
+            .all(|&e| level.edge_sharpness(e as usize) == 0.0);
+    CornerKind {
+        exact: smooth,
+        irregular: !(smooth && level.valence(v) == 4),
+    }
+}
+
+/// The midpoint of edge `a`-`b`, a corner of a sub-face: a regular point after one
+/// refinement, smooth unless the edge is a boundary or sharp.
+fn midpoint_kind(level: &Level, a: u32, b: u32) -> CornerKind {
+    let smooth = level.find_edge(a as usize, b as usize).is_some_and(|e| {
+        let e = e as usize;
+        !level.is_edge_boundary(e)
+            && !level.is_edge_non_manifold(e)
+            && level.edge_sharpness(e) == 0.0
+    });
+    CornerKind {
+        exact: smooth,
+        irregular: !smooth,
+    }
+}
+
+/// The kinds of the four corners of a Ptex face: a quad's vertices, or for sub-face `k` of
+/// another face its vertex `k`, the midpoint towards the next vertex, the face centre (an
+/// extraordinary smooth point) and the midpoint from the previous vertex.
+fn corner_kinds(level: &Level, face: &[u32], sub: Option<u32>) -> [CornerKind; 4] {
+    match sub {
+        None => [0, 1, 2, 3].map(|k| vertex_kind(level, face[k])),
+        Some(k) => {
+            let n = face.len();
+            let k = k as usize;
+            let (prev, here, next) = (face[(k + n - 1) % n], face[k], face[(k + 1) % n]);
+            [
+                vertex_kind(level, here),
+                midpoint_kind(level, here, next),
+                CornerKind {
+                    exact: true,
+                    irregular: true,
+                },
+                midpoint_kind(level, prev, here),
+            ]
+        }
+    }
+}
+
+/// One sample: `du × dv`, its direction, and whether its length counts.
+#[derive(Debug, Clone, Copy)]
+struct Sample {
+    jacobian: DVec3,
+    unit: DVec3,
+    /// Derivative lengths are a convention (irregular corner): direction only.
+    conventional: bool,
+}
+
+/// The check of one Ptex face, on an integer lattice of `m + 1` points per edge, where
+/// `m = (samples_per_edge - 1) · 2^adaptive_depth`, point `(i, j)` at `(i/m, j/m)`.
+struct FaceCheck<'a> {
+    ev: &'a Evaluator,
+    face: u32,
+    corners: [CornerKind; 4],
+    m: u32,
+    max_depth: u32,
+    refine_cos: f64,
+    cache: HashMap<(u32, u32), Sample>,
+    reference: DVec3,
+    typical: f64,
+    samples: usize,
+    reversed: usize,
+    worst_angle: f64,
+    worst_at: Option<(f64, f64)>,
+    min_rel_jacobian: f64,
+    max_turn: f64,
+}
+
+impl<'a> FaceCheck<'a> {
+    fn run(
+        ev: &'a Evaluator,
+        face: u32,
+        corners: [CornerKind; 4],
+        s: &FoldSettings,
+    ) -> Result<FaceCheck<'a>> {
+        let n = s.samples_per_edge as u32;
+        let step = 1u32 << s.adaptive_depth;
+        let mut fc = FaceCheck {
+            ev,
+            face,
+            corners,
+            m: (n - 1) * step,
+            max_depth: s.adaptive_depth as u32,
+            refine_cos: s.refine_turn_deg.to_radians().cos(),
+            cache: HashMap::new(),
+            reference: DVec3::ZERO,
+            typical: 0.0,
+            samples: 0,
+            reversed: 0,
+            worst_angle: 0.0,
+            worst_at: None,
+            min_rel_jacobian: f64::INFINITY,
+            max_turn: 0.0,
+        };
+        let (mut sum, mut sum_len, mut weights) = (DVec3::ZERO, 0.0, 0.0);
+        for j in 0..n {
+            for i in 0..n {
+                let s = fc.sample(i * step, j * step)?;
+                if !s.conventional {
+                    let w = trapezoid(i, n) * trapezoid(j, n);
+                    sum += w * s.jacobian;
+                    sum_len += w * s.jacobian.length();
+                    weights += w;
+                }
+            }
+        }
+        fc.reference = sum.normalize_or_zero();
+        if fc.reference == DVec3::ZERO {
+            let c = fc.m / 2;
+            fc.reference = fc.sample(c, c)?.unit;
+        }
+        fc.typical = if weights > 0.0 {
+            sum_len / weights
+        } else {
+            0.0
+        };
+        // The base lattice (and the centre, if it was needed) in a fixed order.
+        for j in 0..n {
+            for i in 0..n {
+                fc.record((i * step, j * step));
+            }
+        }
+        let c = fc.m / 2;
+        if (c % step != 0) && fc.cache.contains_key(&(c, c)) {
+            fc.record((c, c));
+        }
+        for j in 0..n - 1 {
+            for i in 0..n - 1 {
+                fc.cell(i * step, j * step, step, 0)?;
+            }
+        }
+        Ok(fc)
+    }
+
+    /// The sample at lattice point `(i, j)`, evaluated once.
+    fn sample(&mut self, i: u32, j: u32) -> Result<Sample> {
+        if let Some(&s) = self.cache.get(&(i, j)) {
+            return Ok(s);
+        }
+        let m = self.m;
+        let (mut u, mut v) = (f64::from(i) / f64::from(m), f64::from(j) / f64::from(m));
+        let mut conventional = false;
+        if let Some(k) = self.corner_at(i, j) {
+            let kind = self.corners[k];
+            conventional = kind.irregular;
+            if !kind.exact {
+                u = if i == 0 {
+                    CORNER_INSET
+                } else {
+                    1.0 - CORNER_INSET
+                };
+                v = if j == 0 {
+                    CORNER_INSET
+                } else {
+                    1.0 - CORNER_INSET
+                };
+            }
+        }
+        let e = self.ev.evaluate(self.face, u, v)?;
+        let jacobian = e.du.cross(e.dv);
+        let s = Sample {
+            jacobian,
+            unit: jacobian.normalize_or_zero(),
+            conventional,
+        };
+        self.samples += 1;
+        self.cache.insert((i, j), s);
+        if self.reference != DVec3::ZERO {
+            self.record((i, j));
+        }
+        Ok(s)
+    }
+
+    /// Which face corner lattice point `(i, j)` is, if any.
+    fn corner_at(&self, i: u32, j: u32) -> Option<usize> {
+        let m = self.m;
+        match (i, j) {
+            (0, 0) => Some(0),
+            (i, 0) if i == m => Some(1),
+            (i, j) if i == m && j == m => Some(2),
+            (0, j) if j == m => Some(3),
+            _ => None,
+        }
+    }
+
+    /// Add a cached sample to the statistics (once the reference normal is known).
+    fn record(&mut self, key: (u32, u32)) {
+        let s = self.cache[&key];
+        if s.unit == DVec3::ZERO || self.reference == DVec3::ZERO {
+            return;
+        }
+        let cos = s.unit.dot(self.reference);
+        let angle = cos.clamp(-1.0, 1.0).acos().to_degrees();
+        if cos < 0.0 {
+            self.reversed += 1;
+        }
+        if self.worst_at.is_none() || angle > self.worst_angle {
+            self.worst_angle = angle;
+            let m = f64::from(self.m);
+            self.worst_at = Some((f64::from(key.0) / m, f64::from(key.1) / m));
+        }
+        if !s.conventional && self.typical > 0.0 {
+            let rel = s.jacobian.dot(self.reference) / self.typical;
+            self.min_rel_jacobian = self.min_rel_jacobian.min(rel);
+        }
+    }
+
+    /// Check the cell with lower-left lattice point `(i, j)` and side `size`, refining it
+    /// while it may hide a fold.
+    fn cell(&mut self, i: u32, j: u32, size: u32, depth: u32) -> Result<()> {
+        let pts = [(i, j), (i + size, j), (i + size, j + size), (i, j + size)];
+        let mut units = [DVec3::ZERO; 4];
+        for (k, &(a, b)) in pts.iter().enumerate() {
+            units[k] = self.sample(a, b)?.unit;
+        }
+        let min_cos = min_pair_cos(&units);
+        if depth < self.max_depth {
+            let opposes = units.iter().any(|u| u.dot(self.reference) < 0.0);
+            let at_irregular = pts.iter().any(|&(a, b)| {
+                self.corner_at(a, b)
+                    .is_some_and(|k| self.corners[k].irregular)
+            });
+            if min_cos < self.refine_cos || opposes || at_irregular {
+                let h = size / 2;
+                for (a, b) in [(i, j), (i + h, j), (i + h, j + h), (i, j + h)] {
+                    self.cell(a, b, h, depth + 1)?;
+                }
+                return Ok(());
+            }
+        }
+        let turn = min_cos.clamp(-1.0, 1.0).acos().to_degrees();
+        self.max_turn = self.max_turn.max(turn);
+        Ok(())
+    }
+}
+
+/// The smallest cosine between two of the cell's corner normals (zero normals left out).
+fn min_pair_cos(units: &[DVec3; 4]) -> f64 {
+    let mut min = 1.0f64;
+    for a in 0..4 {
+        for b in a + 1..4 {
+            if units[a] != DVec3::ZERO && units[b] != DVec3::ZERO {
+                min = min.min(units[a].dot(units[b]));
+            }
+        }
+    }
+    min
+}
+
+/// Trapezoid weight of lattice index `i` of `n`.
+fn trapezoid(i: u32, n: u32) -> f64 {
+    if i == 0 || i == n - 1 {
+        0.5
+    } else {
+        1.0
+    }
+}
+
+#[cfg(test)]
+#[path = "folds_tests.rs"]
+mod tests;

@@ -14,22 +14,36 @@
 //! since `du × dv` of the limit parameterization vanishes or diverges there). At a corner
 //! that is not a smooth interior point (boundary, sharp edge or vertex, non-manifold), each
 //! face has its own one-sided normal while the vertex limit reports one face's, so the
-//! sample is taken [`CORNER_INSET`] inside the face instead.
+//! sample is taken [`CORNER_INSET`] inside the face instead; so too at interior valence-2
+//! vertices, where the vertex limit's tangents are OpenSubdiv's approximate masks.
 //!
-//! The criterion. The *reference normal* of a Ptex face is its area-weighted mean normal,
-//! `∫ du × dv du dv` by the trapezoid rule on the base lattice (samples whose derivative
-//! lengths are a convention, at irregular corners, left out; the centre sample's normal if
-//! that integral vanishes). A face **folds** when
-//! - a sample's unit normal makes more than 90° with the reference normal (it is reversed), or
+//! The criterion. The *reference normal* of a Ptex face is its mean unit normal (trapezoid
+//! rule on the base lattice, in the face's parameter; samples at irregular corners and in
+//! bend zones left out; the centre sample's normal if that mean vanishes). A face **folds**
+//! when
+//! - a sample's unit normal makes more than 90° with the reference normal (the surface is
+//!   reversed there: it has turned back over itself), or
 //! - two corner samples of a cell of the finest lattice (after all refinement) are more than
-//!   90° apart: the normal jumps there however fine the sampling, as it does where `du × dv`
-//!   passes through zero (a smooth normal field turns less the finer the cell; a fold line
-//!   keeps a jump of nearly 180°).
+//!   90° apart: the normal jumps there however fine the sampling, as it does where a planar
+//!   piece folds in its plane and `du × dv` passes through zero.
 //!
-//! Two samples far apart in one face may legitimately be more than 90° apart (on a coarse
-//! cube's limit surface opposite corners of a face are 109° apart), so that is not a fold.
-//! A face spanning more than 180° of normal directions without folding would be reported;
-//! no practical mesh has one.
+//! In space a fold is generically not a zero of `du × dv` (that needs `du ∥ dv`, two
+//! conditions) but a tight smooth bend through which the normal turns by nearly 180°; the
+//! first test catches it, the second catches the in-plane folds of flat caps at any
+//! resolution. What is not a fold:
+//! - two samples far apart in one face more than 90° apart (on a coarse cube's limit surface
+//!   opposite corners of a face are 109° apart): only the turn within one finest cell counts;
+//! - a crease or corner, where the normal jumps *between* faces: each face is evaluated on
+//!   its own side;
+//! - the bend of a *semi-sharp* crease of sharpness `s`, which lies inside the faces next to
+//!   the edge, within `min(1, 4 · 2^-ceil(s))` of it in the face's parameter (and around a
+//!   semi-sharp vertex): samples there count for nothing;
+//! - the direction-dependent normal at a cone point (an infinitely sharp vertex with smooth
+//!   edges, sampled one-sidedly): cells touching such a corner have no turn verdict.
+//!
+//! A face whose normals legitimately spread more than 90° from their mean (a very coarse face
+//! on a tight bend) is reported; the check is meant for meshes fine enough that the normal of
+//! a fold-free face stays within 90° of its mean.
 
 use std::collections::HashMap;
 

@@ -7,10 +7,14 @@
 #[allow(dead_code)] // the shape index is not needed here
 mod osd_shapes;
 
+#[path = "support/arc.rs"]
+mod arc;
+
 use std::f64::consts::{PI, TAU};
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use arc::arc;
 use profsubd::construct::sweep::revolve::RevolveInput;
 use profsubd::construct::sweep::sweep::SweepInput;
 use profsubd::construct::sweep::{revolve, sweep};
@@ -173,15 +177,6 @@ fn opensubdiv_shapes_that_do_not_fold_are_fold_free() {
             r.min_relative_jacobian
         );
     }
-}
-
-fn arc(n: usize, r: f64, from: f64, to: f64) -> Vec<[f64; 2]> {
-    (0..=n)
-        .map(|i| {
-            let t = from + (to - from) * i as f64 / n as f64;
-            [r * t.cos(), r * t.sin()]
-        })
-        .collect()
 }
 
 #[test]

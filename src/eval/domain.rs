@@ -1,17 +1,17 @@
 //! The two parameterizations OpenSubdiv users address the limit surface with.
 //!
-//! - [`Domain::Ptex`] (the default, see [`super::ptex`]): `face` is a Ptex face (`Far::PtexIndices`,
-//!   `Far::PatchMap`); a face with `N ≠ 4` vertices is `N` consecutive faces, one per
-//!   corner, each with `(u, v)` in `[0, 1]²`.
+//! - [`Domain::Ptex`] (the default, see [`super::ptex`]): `face` is a Ptex face
+//!   (`Far::PtexIndices`, `Far::PatchMap`); a face with `N ≠ 4` vertices is `N` consecutive
+//!   faces, one per corner, each with `(u, v)` in `[0, 1]²`.
 //! - [`Domain::Bfr`]: `face` is the control face (`Bfr::SurfaceFactory`'s base face) and
-//!   `(u, v)` is in that face's `Bfr::Parameterization`. A quad has `[0, 1]²` as in Ptex. Under
-//!   Catmull-Clark every other face, triangles included, is `QUAD_SUBFACES`: its `N` sub-faces
-//!   are tiled row by row in a grid of `⌈√N⌉` columns (2 for a triangle, 3 for 5 to 9
-//!   vertices, ...), sub-face `k` in the tile at column `k mod ⌈√N⌉`, row `k div ⌈√N⌉`, and
-//!   fills the lower-left half of its unit tile: `(u, v) = (column + s/2, row + t/2)` with
-//!   `(s, t)` the Ptex coordinates of sub-face `k` (`Bfr::Parameterization::
-//!   ConvertNormalizedSubFaceToCoord`). A point in the gaps between those squares is outside
-//!   the domain.
+//!   `(u, v)` is in that face's `Bfr::Parameterization`. A quad has `[0, 1]²` as in Ptex.
+//!   Under Catmull-Clark every other face, triangles included, is `QUAD_SUBFACES`: its `N`
+//!   sub-faces are tiled row by row in a grid of `⌈√N⌉` columns (2 for a triangle, 3 for 5
+//!   to 9 vertices, ...), sub-face `k` in the tile at column `k mod ⌈√N⌉`, row
+//!   `k div ⌈√N⌉`, and fills the lower-left quarter of its unit tile:
+//!   `(u, v) = (column + s/2, row + t/2)` with `(s, t)` the Ptex coordinates of sub-face `k`
+//!   (`Bfr::Parameterization::ConvertNormalizedSubFaceToCoord`). A point in the gaps between
+//!   those squares is outside the domain.
 //!
 //! Derivatives are in the domain's own units: on a sub-face, `∂/∂u` (Bfr) `= 2 ∂/∂s` (Ptex).
 

@@ -5,8 +5,9 @@
 //! - [`limit_vertex_samples`] / [`vertex_limit_stencils`]: positions and derivatives at the
 //!   control vertices ([`vertex_limit`] documents the conventions);
 //! - [`Evaluator`] ([`evaluator`]): the limit surface at any `(face, u, v)`, addressed as
-//!   [`ptex`] documents, or in Bfr's tiled domain ([`domain`]); [`bspline`], [`patch_regular`], [`patch_topology`]: regular bicubic
-//!   patches, when a face is one, and the neighbourhoods refined until it is;
+//!   [`ptex`] documents, or in Bfr's tiled domain ([`domain`]); [`bspline`],
+//!   [`patch_regular`], [`patch_topology`]: regular bicubic patches, when a face is one, and
+//!   the neighbourhoods refined until it is;
 //! - [`StencilTable`], [`LimitSample`]: the shared result types;
 //! - [`surface`]: which faces and vertices have a limit surface, and how points without one
 //!   are marked.

@@ -21,19 +21,20 @@
 //! Derivatives are reported at the corner of the vertex's *first face*: the first face in
 //! OpenSubdiv's vertex-face order (`Far::TopologyLevel::GetVertexFaces(v)[0]`, counter-clockwise
 //! for manifold vertices, starting at the leading boundary face on a boundary) that is not a
-//! hole (a vertex whose faces are all holes has no limit). `du` and `dv` are in that face's parameterization
-//! as `Bfr::Surface` has it: for a quad, corner `k` at (0,0), (1,0), (1,1), (0,1); for any
-//! other face, sub-face `k` of its quadrangulation with local (0,0) at the vertex, `u`
-//! towards the midpoint of the edge to the next vertex and `v` towards the midpoint of the
-//! edge from the previous vertex. They are exact (equal to the bicubic patch's) at regular
-//! vertices: smooth valence 4, crease sectors of two faces, single-face corners, after any
-//! semi-sharp sharpness has decayed. Elsewhere the *direction* they span is OpenSubdiv's limit
-//! tangent plane (`Sdc` tangent masks: the exact plane at smooth extraordinary vertices) and
-//! their lengths are a convention (the masks scaled by 1/12 at the level where the
-//! neighbourhood became stationary, times 2^level), since the limit parameterization has a
-//! zero or unbounded derivative at an extraordinary vertex. At darts, interior valence-2
-//! vertices, crease sectors of other than two faces and corners whose first face has a
-//! smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are approximate there.
+//! hole (a vertex whose faces are all holes has no limit). `du` and `dv` are in that face's
+//! parameterization as `Bfr::Surface` has it: for a quad, corner `k` at (0,0), (1,0), (1,1),
+//! (0,1); for any other face, sub-face `k` of its quadrangulation with local (0,0) at the
+//! vertex, `u` towards the midpoint of the edge to the next vertex and `v` towards the
+//! midpoint of the edge from the previous vertex. They are exact (equal to the bicubic
+//! patch's) at regular vertices: smooth valence 4, crease sectors of two faces, single-face
+//! corners, after any semi-sharp sharpness has decayed. Elsewhere the *direction* they span is
+//! OpenSubdiv's limit tangent plane (`Sdc` tangent masks: the exact plane at smooth
+//! extraordinary vertices) and their lengths are a convention (the masks scaled by 1/12 at
+//! the level where the neighbourhood became stationary, times 2^level), since the limit
+//! parameterization has a zero or unbounded derivative at an extraordinary vertex. At darts,
+//! interior valence-2 vertices, crease sectors of other than two faces and corners whose
+//! first face has a smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are
+//! approximate there.
 
 use crate::error::Result;
 use crate::mesh::Mesh;

@@ -358,8 +358,8 @@ fn evaluate_points_marks_points_without_surface_and_takes_both_domains() {
         assert_eq!(out[4][r.clone()], (s.du * scale).to_array());
         assert_eq!(out[5][r], (s.dv * scale).to_array());
     }
-    for k in 0..6 {
-        assert!(out[k][3..6].iter().all(|x| x.is_nan()), "{k}: {:?}", out[k]);
+    for (k, a) in out.iter().enumerate() {
+        assert!(a[3..6].iter().all(|x| x.is_nan()), "{k}: {a:?}");
     }
 }
 

@@ -201,7 +201,8 @@ fn write_points(
 ///
 /// Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, message naming the point): a face out of range,
 /// u or v outside [0, 1] or NaN, a hole face, a face without limit surface (boundary
-/// interpolation "none"). Nothing is written on error.
+/// interpolation "none"). Nothing is written on error. This is
+/// `profsubd_evaluator_evaluate_points` with `PROFSUBD_DOMAIN_PTEX`, `strict` = 1 and no mask.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn profsubd_evaluator_evaluate(
@@ -214,20 +215,19 @@ pub unsafe extern "C" fn profsubd_evaluator_evaluate(
     du: *mut f64,
     dv: *mut f64,
 ) -> profsubd_status {
-    status_call(|| {
-        let ev = evaluator_arg(evaluator)?;
-        let faces = arg_slice(faces, n, "faces")?;
-        let us = arg_slice(u, n, "u")?;
-        let vs = arg_slice(v, n, "v")?;
-        let pos = CopyOut::new(n, std::ptr::null_mut())?.buffer(positions, 3, "positions")?;
-        let du = optional_points(du, n, "du")?;
-        let dv = optional_points(dv, n, "dv")?;
-        let samples = ev.evaluate_many(faces, us, vs)?;
-        write_points(Some(pos), &samples, |s| s.position);
-        write_points(du, &samples, |s| s.du);
-        write_points(dv, &samples, |s| s.dv);
-        Ok(())
-    })
+    profsubd_evaluator_evaluate_points(
+        evaluator,
+        profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
+        1,
+        faces,
+        u,
+        v,
+        n,
+        positions,
+        du,
+        dv,
+        std::ptr::null_mut(),
+    )
 }
 
 /// Evaluate `n` points `(faces[i], u[i], v[i])` given in `domain` (a `profsubd_domain`

@@ -138,7 +138,7 @@ fn bad_input_gives_a_status_and_a_message_and_writes_nothing() {
             call(ev, &[1], 0.5, 0.5, p.as_mut_ptr()),
             PROFSUBD_ERROR_INVALID_ARGUMENT
         );
-        assert!(last_error().contains("hole"));
+        assert!(last_error().contains("point 0 has no limit surface"));
         assert_eq!(
             call(ev, &f, 0.5, 0.5, null_mut()),
             PROFSUBD_ERROR_NULL_ARGUMENT
@@ -449,30 +449,37 @@ fn limit_vertices_mark_the_isolated_vertex() {
     let (mut p, mut du, mut dv) = (vec![0.0; 30], vec![0.0; 30], vec![0.0; 30]);
     let mut mask = vec![7u8; 10];
     let mut needed = 0;
-    unsafe {
-        let st = profsubd_evaluator_limit_vertices_masked(
+    // Positions into `out`, no derivatives or mask.
+    let positions_only = |ev, strict, out: &mut Vec<f64>, needed: &mut usize| unsafe {
+        profsubd_evaluator_limit_vertices_masked(
             ev,
-            0,
-            p.as_mut_ptr(),
-            du.as_mut_ptr(),
-            dv.as_mut_ptr(),
-            mask.as_mut_ptr(),
-            9,
-            &mut needed,
-        );
-        assert_eq!(st, PROFSUBD_ERROR_BUFFER_TOO_SMALL);
-        assert_eq!((needed, mask[0]), (10, 7));
-        let st = profsubd_evaluator_limit_vertices_masked(
-            ev,
-            0,
-            p.as_mut_ptr(),
-            du.as_mut_ptr(),
-            dv.as_mut_ptr(),
-            mask.as_mut_ptr(),
+            strict,
+            out.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
             10,
-            &mut needed,
-        );
-        assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+            needed,
+        )
+    };
+    unsafe {
+        for (capacity, want) in [(9, PROFSUBD_ERROR_BUFFER_TOO_SMALL), (10, PROFSUBD_OK)] {
+            let st = profsubd_evaluator_limit_vertices_masked(
+                ev,
+                0,
+                p.as_mut_ptr(),
+                du.as_mut_ptr(),
+                dv.as_mut_ptr(),
+                mask.as_mut_ptr(),
+                capacity,
+                &mut needed,
+            );
+            assert_eq!(st, want, "{}", last_error());
+            assert_eq!(needed, 10);
+            if capacity == 9 {
+                assert_eq!((p[0], mask[0]), (0.0, 7), "nothing written");
+            }
+        }
         // The plain call writes the same, NaN included.
         let mut q = vec![0.0; 30];
         let st = profsubd_evaluator_limit_vertices(
@@ -487,45 +494,20 @@ fn limit_vertices_mark_the_isolated_vertex() {
         assert!(q[..27] == p[..27] && q[27..].iter().all(|x| x.is_nan()));
         // Strict: an error naming the vertex, nothing written.
         let mut r = vec![1.0; 30];
-        let st = profsubd_evaluator_limit_vertices_masked(
-            ev,
-            1,
-            r.as_mut_ptr(),
-            null_mut(),
-            null_mut(),
-            null_mut(),
-            10,
-            &mut needed,
-        );
-        assert_eq!(st, PROFSUBD_ERROR_INVALID_ARGUMENT);
-        assert!(last_error().contains("vertex 9 has no limit surface"));
-        assert_eq!(r, vec![1.0; 30]);
         assert_eq!(
-            profsubd_evaluator_limit_vertices_masked(
-                ev,
-                2,
-                r.as_mut_ptr(),
-                null_mut(),
-                null_mut(),
-                null_mut(),
-                10,
-                &mut needed,
-            ),
+            positions_only(ev, 1, &mut r, &mut needed),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("vertex 9 has no limit surface"));
+        assert_eq!(
+            positions_only(ev, 2, &mut r, &mut needed),
             PROFSUBD_ERROR_INVALID_ARGUMENT
         );
         assert_eq!(
-            profsubd_evaluator_limit_vertices_masked(
-                null(),
-                0,
-                r.as_mut_ptr(),
-                null_mut(),
-                null_mut(),
-                null_mut(),
-                10,
-                &mut needed,
-            ),
+            positions_only(null(), 0, &mut r, &mut needed),
             PROFSUBD_ERROR_NULL_ARGUMENT
         );
+        assert_eq!(r, vec![1.0; 30]);
         profsubd_evaluator_free(ev);
     }
     let want = limit_vertex_samples(&mesh(), &SubdivOptions::default()).unwrap();

@@ -552,7 +552,8 @@ enum profsubd_status profsubd_evaluator_face_to_parametric(const struct profsubd
  *
  * Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, message naming the point): a face out of range,
  * u or v outside [0, 1] or NaN, a hole face, a face without limit surface (boundary
- * interpolation "none"). Nothing is written on error.
+ * interpolation "none"). Nothing is written on error. This is
+ * `profsubd_evaluator_evaluate_points` with `PROFSUBD_DOMAIN_PTEX`, `strict` = 1 and no mask.
  */
 enum profsubd_status profsubd_evaluator_evaluate(const struct profsubd_evaluator *evaluator,
                                                  const uint32_t *faces,

@@ -442,7 +442,15 @@ void check_shape(Checker &ck, const std::string &name, OsdShape shape, Figures &
 
     for (int v = 0; v < nv; ++v) {
         auto faces = L.GetVertexFaces(v);
-        if (faces.size() == 0) continue;
+        // A vertex none of whose faces has a limit surface (isolated, all faces holes) has no
+        // limit: profsubd marks it NaN (conformance_no_surface checks the rule itself).
+        bool surface = false;
+        for (int f : faces) surface = surface || !L.IsFaceHole(f);
+        if (!surface) {
+            ck.check(std::isnan(psd.p[3 * v]) && std::isnan(psd.du[3 * v]) && std::isnan(psd.dv[3 * v]),
+                     name + " vertex " + std::to_string(v) + ": no limit surface, but not NaN");
+            continue;
+        }
         ++fig.vertices;
         fig.darts += kinds.dart[v];
         fig.val2_darts += kinds.val2_dart[v];

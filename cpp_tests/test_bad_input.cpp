@@ -477,6 +477,95 @@ void check_strings_and_version(Checker &ck) {
     ck.check(profsubd_last_error_message() != nullptr, "last_error_message is never NULL");
 }
 
+// The evaluator's marking entry points (profsubd_evaluator_evaluate_points,
+// profsubd_evaluator_limit_vertices_masked): bad arguments get their status and write
+// nothing; a point or vertex without limit surface is NaN + mask 0, or with strict = 1 an
+// error that writes nothing.
+void check_evaluator_points(Checker &ck) {
+    ck.set_context("evaluator points");
+    for (int holed = 0; holed < 2; ++holed) {
+        SquareDesc s;
+        s.d.num_holes = holed;  // the one face a hole: no point and no vertex has a surface
+        profsubd_mesh *raw = nullptr;
+        profsubd_mesh_new(&s.d, &raw);
+        MeshPtr m(raw);
+        profsubd_evaluator *ev = nullptr;
+        if (!ck.check(profsubd_evaluator_new(m.get(), nullptr, &ev) == PROFSUBD_OK, "evaluator_new")) return;
+        const std::string tag = holed ? " (hole)" : "";
+        uint32_t face = 0;
+        double u = 0.25, v = 0.5, p[3] = {7, 7, 7}, du[3] = {7, 7, 7};
+        uint8_t mask = 7;
+        auto eval = [&](const profsubd_evaluator *e, int32_t domain, int32_t strict, const uint32_t *f,
+                        double uu, double *pos) {
+            return profsubd_evaluator_evaluate_points(e, domain, strict, f, &uu, &v, 1, pos, du, nullptr, &mask);
+        };
+        auto untouched = [&](const std::string &what) {
+            ck.check(p[0] == 7 && p[1] == 7 && p[2] == 7 && du[0] == 7 && mask == 7, what + ": outputs untouched");
+        };
+        expect(ck, eval(nullptr, PROFSUBD_DOMAIN_PTEX, 0, &face, u, p), PROFSUBD_ERROR_NULL_ARGUMENT,
+               {"evaluator"}, "evaluate_points NULL evaluator" + tag);
+        expect(ck, eval(reinterpret_cast<profsubd_evaluator *>(m.get()), PROFSUBD_DOMAIN_PTEX, 0, &face, u, p),
+               PROFSUBD_ERROR_INVALID_HANDLE, {"evaluator"}, "evaluate_points with a mesh handle" + tag);
+        expect(ck, eval(ev, 7, 0, &face, u, p), PROFSUBD_ERROR_INVALID_ARGUMENT, {"domain", "7"},
+               "evaluate_points domain 7" + tag);
+        expect(ck, eval(ev, PROFSUBD_DOMAIN_BFR, 2, &face, u, p), PROFSUBD_ERROR_INVALID_ARGUMENT, {"strict", "2"},
+               "evaluate_points strict 2" + tag);
+        expect(ck, eval(ev, PROFSUBD_DOMAIN_PTEX, 0, nullptr, u, p), PROFSUBD_ERROR_NULL_ARGUMENT, {"faces"},
+               "evaluate_points NULL faces" + tag);
+        expect(ck, eval(ev, PROFSUBD_DOMAIN_PTEX, 0, &face, u, nullptr), PROFSUBD_ERROR_NULL_ARGUMENT,
+               {"positions"}, "evaluate_points NULL positions" + tag);
+        uint32_t far_face = 1;
+        expect(ck, eval(ev, PROFSUBD_DOMAIN_BFR, 0, &far_face, u, p), PROFSUBD_ERROR_INVALID_ARGUMENT,
+               {"point 0", "face 1", "out of range"}, "evaluate_points Bfr face 1 of 1" + tag);
+        expect(ck, eval(ev, PROFSUBD_DOMAIN_BFR, 0, &face, 1.5, p), PROFSUBD_ERROR_INVALID_ARGUMENT, {"outside"},
+               "evaluate_points u = 1.5" + tag);
+        expect(ck, eval(ev, PROFSUBD_DOMAIN_PTEX, 0, &face, std::nan(""), p), PROFSUBD_ERROR_INVALID_ARGUMENT,
+               {"outside"}, "evaluate_points u = NaN" + tag);
+        untouched("evaluate_points errors" + tag);
+        if (holed) {
+            expect(ck, eval(ev, PROFSUBD_DOMAIN_PTEX, 1, &face, u, p), PROFSUBD_ERROR_INVALID_ARGUMENT,
+                   {"point 0", "no limit surface"}, "evaluate_points strict on a hole");
+            untouched("evaluate_points strict on a hole");
+        }
+        ck.check(eval(ev, PROFSUBD_DOMAIN_BFR, 0, &face, u, p) == PROFSUBD_OK, "evaluate_points" + tag);
+        ck.check(mask == (holed ? 0 : 1), "has_surface" + tag);
+        ck.check(std::isnan(p[0]) == bool(holed) && std::isnan(du[2]) == bool(holed), "NaN iff no surface" + tag);
+
+        // Vertex limits.
+        double vp[12], big[12];
+        std::fill(vp, vp + 12, 7.0);
+        std::fill(big, big + 12, 7.0);
+        uint8_t vm[4] = {7, 7, 7, 7};
+        size_t needed = 0;
+        expect(ck, profsubd_evaluator_limit_vertices_masked(nullptr, 0, vp, nullptr, nullptr, vm, 4, &needed),
+               PROFSUBD_ERROR_NULL_ARGUMENT, {"evaluator"}, "limit_vertices_masked NULL evaluator" + tag);
+        expect(ck, profsubd_evaluator_limit_vertices_masked(ev, 5, vp, nullptr, nullptr, vm, 4, &needed),
+               PROFSUBD_ERROR_INVALID_ARGUMENT, {"strict", "5"}, "limit_vertices_masked strict 5" + tag);
+        expect(ck, profsubd_evaluator_limit_vertices_masked(ev, 0, nullptr, nullptr, nullptr, vm, 4, &needed),
+               PROFSUBD_ERROR_NULL_ARGUMENT, {"positions"}, "limit_vertices_masked NULL positions" + tag);
+        expect(ck, profsubd_evaluator_limit_vertices_masked(ev, 0, vp, nullptr, nullptr, vm, 3, &needed),
+               PROFSUBD_ERROR_BUFFER_TOO_SMALL, {"4"}, "limit_vertices_masked capacity 3" + tag);
+        ck.equal(needed, size_t(4), "limit_vertices_masked needed" + tag);
+        if (holed) {
+            expect(ck, profsubd_evaluator_limit_vertices_masked(ev, 1, vp, nullptr, nullptr, vm, 4, &needed),
+                   PROFSUBD_ERROR_INVALID_ARGUMENT, {"vertex 0", "no limit surface"},
+                   "limit_vertices_masked strict with a hole");
+        }
+        ck.check(vp[0] == 7 && vm[0] == 7, "limit_vertices_masked errors: outputs untouched" + tag);
+        ck.check(profsubd_evaluator_limit_vertices_masked(ev, 0, vp, nullptr, nullptr, vm, 4, &needed) ==
+                     PROFSUBD_OK,
+                 "limit_vertices_masked" + tag);
+        for (int i = 0; i < 4; ++i) {
+            ck.check(vm[i] == (holed ? 0 : 1) && std::isnan(vp[3 * i]) == bool(holed),
+                     "vertex " + std::to_string(i) + " marked iff no surface" + tag);
+        }
+        ck.check(profsubd_evaluator_limit_vertices(ev, big, nullptr, nullptr, 4, &needed) == PROFSUBD_OK &&
+                     std::isnan(big[0]) == bool(holed),
+                 "limit_vertices: NaN iff no surface" + tag);
+        profsubd_evaluator_free(ev);
+    }
+}
+
 // Messages are per thread; one mesh handle may be read from several threads at once.
 void check_threads(Checker &ck, const TempDir &tmp) {
     ck.set_context("threads");
@@ -583,6 +672,7 @@ int main() {
     check_refine(ck);
     check_folds(ck);
     check_strings_and_version(ck);
+    check_evaluator_points(ck);
     check_threads(ck, tmp);
     return ck.finish();
 }

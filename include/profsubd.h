@@ -217,6 +217,27 @@ typedef enum profsubd_vertex_order {
 } profsubd_vertex_order;
 
 /**
+ * Values for the `domain` of `profsubd_evaluator_evaluate_points` (passed as `int32_t`):
+ * how a point `(face, u, v)` is meant.
+ */
+typedef enum profsubd_domain {
+    /**
+     * OpenSubdiv's Ptex faces (`Far::PtexIndices`, `Far::PatchMap`): `face` is a parametric
+     * face (a quad is one, a face with N != 4 vertices N, one per corner), `(u, v)` in
+     * `[0, 1]²`. The domain of `profsubd_evaluator_evaluate`.
+     */
+    PROFSUBD_DOMAIN_PTEX = 0,
+    /**
+     * Bfr's base faces (`Bfr::SurfaceFactory`, `Bfr::Parameterization`): `face` is the
+     * control face; a quad has `(u, v)` in `[0, 1]²`, any other face (triangles too) N
+     * sub-faces of side 1/2 tiled row by row in ceil(sqrt(N)) columns, sub-face k (Ptex
+     * coordinates (s, t)) at `(k % columns + s / 2, k / columns + t / 2)`. Derivatives are
+     * with respect to these (u, v): twice the Ptex ones on a sub-face.
+     */
+    PROFSUBD_DOMAIN_BFR = 1,
+} profsubd_domain;
+
+/**
  * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
  * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
@@ -227,6 +248,8 @@ typedef enum profsubd_vertex_order {
  * parametric faces (sub-face k: (0,0) at vertex k, (1,0) at the middle of edge k -> k+1,
  * (1,1) at the face centre, (0,1) at the middle of edge k-1 -> k), as `Far::PtexIndices`
  * numbers them; `profsubd_evaluator_face_to_parametric` gives the numbers.
+ * `profsubd_evaluator_evaluate_points` also takes Bfr's parameterization
+ * (`PROFSUBD_DOMAIN_BFR`) and marks points without limit surface instead of failing.
  */
 typedef struct profsubd_evaluator profsubd_evaluator;
 
@@ -595,7 +618,8 @@ enum profsubd_status profsubd_evaluator_face_to_parametric(const struct profsubd
  *
  * Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, message naming the point): a face out of range,
  * u or v outside [0, 1] or NaN, a hole face, a face without limit surface (boundary
- * interpolation "none"). Nothing is written on error.
+ * interpolation "none"). Nothing is written on error. This is
+ * `profsubd_evaluator_evaluate_points` with `PROFSUBD_DOMAIN_PTEX`, `strict` = 1 and no mask.
  */
 enum profsubd_status profsubd_evaluator_evaluate(const struct profsubd_evaluator *evaluator,
                                                  const uint32_t *faces,
@@ -607,10 +631,41 @@ enum profsubd_status profsubd_evaluator_evaluate(const struct profsubd_evaluator
                                                  double *dv);
 
 /**
+ * Evaluate `n` points `(faces[i], u[i], v[i])` given in `domain` (a `profsubd_domain`
+ * value): limit position into `positions` (3 doubles per point), and, when not NULL, the
+ * derivatives with respect to the domain's u and v into `du` and `dv` (3 doubles per point
+ * each) and into `has_surface[i]` 1 for a point of the limit surface, 0 for a point without
+ * one (a hole; under boundary interpolation "none", a face at the boundary).
+ *
+ * A point without limit surface gets NaN in `positions`, `du` and `dv` (and 0 in
+ * `has_surface`), the others are evaluated: one such point does not fail the batch. With
+ * `strict` = 1 it does: `PROFSUBD_ERROR_INVALID_ARGUMENT` naming the first such point, and
+ * nothing is written (`strict` = 0: marking).
+ *
+ * Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, message naming the point): `domain` or
+ * `strict` out of range, a face out of range, (u, v) NaN or outside the domain (for
+ * `PROFSUBD_DOMAIN_BFR`, in a gap between sub-face squares too). Nothing is written on
+ * error.
+ */
+enum profsubd_status profsubd_evaluator_evaluate_points(const struct profsubd_evaluator *evaluator,
+                                                        int32_t domain,
+                                                        int32_t strict,
+                                                        const uint32_t *faces,
+                                                        const double *u,
+                                                        const double *v,
+                                                        size_t n,
+                                                        double *positions,
+                                                        double *du,
+                                                        double *dv,
+                                                        uint8_t *has_surface);
+
+/**
  * Exact limit position of every control vertex, in vertex order, into `positions` (3
  * doubles per vertex), and when not NULL the derivatives into `du` and `dv` (3 doubles per
  * vertex each, with respect to the (u, v) of the vertex's first face, as OpenSubdiv orders
- * faces around a vertex). `capacity` and `*needed` count vertices (copy-out protocol).
+ * faces around a vertex). A vertex without limit surface (isolated, or all its faces holes)
+ * gets NaN; `profsubd_evaluator_limit_vertices_masked` also says which. `capacity` and
+ * `*needed` count vertices (copy-out protocol).
  */
 enum profsubd_status profsubd_evaluator_limit_vertices(const struct profsubd_evaluator *evaluator,
                                                        double *positions,
@@ -618,6 +673,23 @@ enum profsubd_status profsubd_evaluator_limit_vertices(const struct profsubd_eva
                                                        double *dv,
                                                        size_t capacity,
                                                        size_t *needed);
+
+/**
+ * Like `profsubd_evaluator_limit_vertices`, and when `has_surface` is not NULL, 1 per vertex
+ * with a limit position, 0 per vertex without (isolated, or all its faces holes: OpenSubdiv
+ * gives a vertex a limit when one of its faces has a limit surface), whose entries in
+ * `positions`, `du` and `dv` are NaN. With `strict` = 1 a vertex without limit surface is
+ * an error instead (`PROFSUBD_ERROR_INVALID_ARGUMENT` naming the first one; nothing
+ * written). `capacity` and `*needed` count vertices (copy-out protocol).
+ */
+enum profsubd_status profsubd_evaluator_limit_vertices_masked(const struct profsubd_evaluator *evaluator,
+                                                              int32_t strict,
+                                                              double *positions,
+                                                              double *du,
+                                                              double *dv,
+                                                              uint8_t *has_surface,
+                                                              size_t capacity,
+                                                              size_t *needed);
 
 /**
  * Sample the limit surface of `evaluator` and report where it folds: a sample whose normal
@@ -655,8 +727,9 @@ enum profsubd_status profsubd_fold_report_get_folded_faces(const struct profsubd
  * Build the limit stencils of every control vertex of `mesh` under `options` (NULL: the
  * mesh's tags, then the defaults), one row per vertex in vertex order. `quantity` is
  * `PROFSUBD_LIMIT_POSITION` (the exact limit position, also at darts and semi-sharp
- * features), `PROFSUBD_LIMIT_DU` or `PROFSUBD_LIMIT_DV`. An isolated vertex's row is the
- * vertex itself (position) or empty (derivatives).
+ * features), `PROFSUBD_LIMIT_DU` or `PROFSUBD_LIMIT_DV`. A vertex without limit surface
+ * (isolated, or all its faces holes) has an empty row (`offsets[i] == offsets[i + 1]`),
+ * which `profsubd_stencil_table_apply` turns into NaN; every other row has entries.
  */
 enum profsubd_status profsubd_limit_stencils_new(const struct profsubd_mesh *mesh,
                                                  const struct profsubd_options *options,
@@ -709,7 +782,8 @@ enum profsubd_status profsubd_stencil_table_get_weights(const struct profsubd_st
 
 /**
  * Apply every row to `points` (`num_points` points of 3 doubles, one per control vertex)
- * and write one point (3 doubles) per row into `out`. `capacity` and `*needed` count points
+ * and write one point (3 doubles) per row into `out`; an empty row (no limit surface) gives
+ * NaN. `capacity` and `*needed` count points
  * (copy-out protocol). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` if a stencil refers to a
  * control vertex beyond `num_points`.
  */

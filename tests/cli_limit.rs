@@ -190,6 +190,21 @@ fn bad_input_is_reported_with_file_and_line() {
         "--at",
         pts.to_str().unwrap(),
     ]);
+    // No surface: `nan` for every number, or with --strict an error naming the line.
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(String::from_utf8_lossy(&o.stdout), "nan nan nan\n");
+    let o = profsubd(&[
+        "limit",
+        holed.to_str().unwrap(),
+        "--at",
+        pts.to_str().unwrap(),
+        "--strict",
+    ]);
     assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("face 2 is a hole"));
+    assert!(o.stdout.is_empty());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("hole.txt:1: face 2 has no limit surface (--strict)"),
+        "{err}"
+    );
 }

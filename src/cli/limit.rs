@@ -1,20 +1,23 @@
-//! `profsubd limit MESH.obj [--at POINTS.txt] [--derivs]`: exact limit positions (and first
-//! derivatives) at the control vertices or at given `(face, u, v)` points.
+//! `profsubd limit MESH.obj [--at POINTS.txt [--domain ptex|bfr]] [--derivs] [--strict]`:
+//! exact limit positions (and first derivatives) at the control vertices or at given
+//! `(face, u, v)` points.
 //!
 //! Output: one line per vertex (vertex order) or per point (file order): `x y z`, with
 //! `--derivs` followed by `dux duy duz dvx dvy dvz`. Numbers are printed as C's `%.17g`
 //! would choose between plain and exponent notation, but with the fewest digits that read
-//! back to the same double (so `0.1`, not `0.10000000000000001`).
+//! back to the same double (so `0.1`, not `0.10000000000000001`). A vertex or point without
+//! limit surface (see [`crate::eval::surface`]) prints `nan` for every number, as
+//! OpenSubdiv-based tools print it; `--strict` makes it an error instead.
 
 use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
-use clap::Args;
+use clap::{Args, ValueEnum};
 
 use super::{read_mesh, SubdivFlags};
 use crate::error::{Error, Result};
-use crate::eval::{limit_vertex_samples, Evaluator, LimitSample};
+use crate::eval::{limit_vertex_samples, require_surface, Domain, Evaluator, LimitSample};
 
 /// Arguments of `limit`.
 #[derive(Debug, Args)]
@@ -23,38 +26,83 @@ pub struct LimitArgs {
     #[arg(value_name = "MESH.obj")]
     pub input: PathBuf,
     /// Evaluate at the points of this file, one `face u v` per line (`#` comments and blank
-    /// lines allowed). `face` is OpenSubdiv's Ptex face: the face index on a mesh of quads;
-    /// a face with N != 4 vertices counts as N faces, one per corner. `u` and `v` in [0, 1].
+    /// lines allowed), in the parameterization given by --domain.
     #[arg(long, value_name = "POINTS.txt")]
     pub at: Option<PathBuf>,
+    /// How `face u v` is meant. `ptex` (OpenSubdiv's Far::PtexIndices): on a mesh of quads
+    /// the face index, a face with N != 4 vertices counts as N faces, one per corner, u and
+    /// v in [0, 1]. `bfr` (Bfr::Parameterization): the control face; a quad has u, v in
+    /// [0, 1], any other face N sub-faces of side 1/2 tiled in ceil(sqrt(N)) columns.
+    /// Derivatives are in the chosen domain's units.
+    #[arg(
+        long,
+        value_enum,
+        value_name = "DOMAIN",
+        default_value = "ptex",
+        requires = "at"
+    )]
+    pub domain: DomainArg,
     /// Append the derivatives with respect to u and v (`dux duy duz dvx dvy dvz`).
     #[arg(long)]
     pub derivs: bool,
+    /// Fail (exit 1, naming it) at a vertex or point without limit surface instead of
+    /// printing `nan` for it.
+    #[arg(long)]
+    pub strict: bool,
     /// Subdivision options.
     #[command(flatten)]
     pub options: SubdivFlags,
+}
+
+/// `--domain` values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum DomainArg {
+    /// OpenSubdiv's Ptex faces (Far::PtexIndices, Far::PatchMap).
+    Ptex,
+    /// Bfr's base faces with their tiled sub-face domain (Bfr::Parameterization).
+    Bfr,
 }
 
 /// Run `limit`; returns exit code 0 on success.
 pub fn run(args: &LimitArgs) -> Result<i32> {
     let mesh = read_mesh(&args.input)?;
     let options = args.options.partial().over(mesh.options()).resolve();
-    let samples = match &args.at {
-        None => limit_vertex_samples(&mesh, &options)?,
+    let samples: Vec<Option<LimitSample>> = match &args.at {
+        None => limit_vertex_samples(&mesh, &options)?
+            .into_iter()
+            .map(|s| s.has_surface().then_some(s))
+            .collect(),
         Some(path) => {
+            let domain = match args.domain {
+                DomainArg::Ptex => Domain::Ptex,
+                DomainArg::Bfr => Domain::Bfr,
+            };
             let points = read_points(path)?;
             let ev = Evaluator::new(&mesh, &options)?;
             let mut out = Vec::with_capacity(points.len());
             for p in &points {
-                out.push(ev.evaluate(p.face, p.u, p.v).map_err(|e| Error::Parse {
+                let at = |message: String| Error::Parse {
                     path: path.clone(),
                     line: p.line,
-                    message: e.to_string(),
-                })?);
+                    message,
+                };
+                let s = ev
+                    .evaluate_in(domain, p.face, p.u, p.v)
+                    .map_err(|e| at(e.to_string()))?;
+                if s.is_none() && args.strict {
+                    return Err(at(format!(
+                        "face {} has no limit surface (--strict)",
+                        p.face
+                    )));
+                }
+                out.push(s);
             }
             out
         }
     };
+    if args.strict && args.at.is_none() {
+        require_surface(samples.clone(), "vertex")?;
+    }
     let text = format_samples(&samples, args.derivs);
     std::io::stdout()
         .lock()
@@ -128,10 +176,11 @@ pub fn parse_points(text: &str, path: &Path) -> Result<Vec<PointLine>> {
     Ok(out)
 }
 
-/// The output lines for `samples`.
-pub fn format_samples(samples: &[LimitSample], derivs: bool) -> String {
+/// The output lines for `samples`; `None` (no limit surface) prints `nan` for every number.
+pub fn format_samples(samples: &[Option<LimitSample>], derivs: bool) -> String {
     let mut out = String::with_capacity(samples.len() * if derivs { 180 } else { 60 });
     for s in samples {
+        let s = s.unwrap_or(LimitSample::NO_SURFACE);
         let p = s.position;
         let _ = write!(out, "{} {} {}", G17(p.x), G17(p.y), G17(p.z));
         if derivs {
@@ -151,7 +200,14 @@ struct G17(f64);
 impl std::fmt::Display for G17 {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let x = self.0;
-        if x == 0.0 || !x.is_finite() {
+        if x.is_nan() {
+            // C's spelling, which OpenSubdiv-based tools print and C's strtod reads.
+            return f.write_str("nan");
+        }
+        if x.is_infinite() {
+            return f.write_str(if x > 0.0 { "inf" } else { "-inf" });
+        }
+        if x == 0.0 {
             return write!(f, "{x}");
         }
         let sci = format!("{x:e}");
@@ -182,6 +238,14 @@ mod tests {
         assert_eq!(s(1.5e-5), "1.5e-5");
         assert_eq!(s(12345678901234567.0), "12345678901234568");
         assert_eq!(s(1.2e17), "1.2e17");
+        assert_eq!(s(f64::NAN), "nan");
+        assert_eq!(s(f64::INFINITY), "inf");
+        assert_eq!(s(f64::NEG_INFINITY), "-inf");
+        let none = format_samples(&[None, Some(LimitSample::default())], true);
+        assert_eq!(
+            none,
+            "nan nan nan nan nan nan nan nan nan\n0 0 0 0 0 0 0 0 0\n"
+        );
         for x in [
             std::f64::consts::PI,
             1.0 / 3.0,

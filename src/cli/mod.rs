@@ -83,9 +83,12 @@ pub enum Command {
     /// Without --at: one line `x y z` per control vertex, in vertex order. With --at
     /// POINTS.txt (lines `face u v`): one line per point. --derivs appends `dux duy duz dvx
     /// dvy dvz` (at a vertex: with respect to the (u, v) of its first face). Numbers as
-    /// %.17g, with the shortest digits that read back exactly. `face` is OpenSubdiv's Ptex
-    /// face (the face index on a mesh of quads; a face with N != 4 vertices counts as N
-    /// faces, one per corner: (0,0) at the corner, (1,1) at the face centre).
+    /// %.17g, with the shortest digits that read back exactly. With --domain ptex (the
+    /// default) `face` is OpenSubdiv's Ptex face (the face index on a mesh of quads; a face
+    /// with N != 4 vertices counts as N faces, one per corner: (0,0) at the corner, (1,1) at
+    /// the face centre); with --domain bfr it is the control face with Bfr's tiled
+    /// parameterization. A vertex or point without limit surface (isolated vertex, holes,
+    /// boundary faces under --boundary none) prints `nan nan nan`; --strict fails instead.
     Limit(limit::LimitArgs),
     /// Build an interpolating Catmull-Clark mesh from profile curves (Hui & Lai).
     ///

@@ -1,6 +1,8 @@
 //! The exact limit surface at any `(face, u, v)`: position and first derivatives.
 //!
-//! Faces are addressed by OpenSubdiv's Ptex numbering (see [`super::ptex`]). Each parametric
+//! Faces are addressed by OpenSubdiv's Ptex numbering (see [`super::ptex`]), or with
+//! [`Evaluator::evaluate_in`] in Bfr's tiled domain too (see [`super::domain`]); faces
+//! without limit surface are marked ([`super::surface`]). Each parametric
 //! face is the root of a quadtree built at construction: a quad whose corners are regular is a
 //! bicubic B-spline leaf ([`super::patch_regular`]); any other quad is refined one level —
 //! only its neighbourhood, see [`super::patch_topology`] — and each of its four children is
@@ -15,14 +17,16 @@
 //! `Sync`, so many threads may evaluate at once.
 
 use super::bspline::BicubicPatch;
+use super::domain::Domain;
 use super::patch_regular::regular_patch;
 use super::patch_topology::Neighbourhood;
 use super::ptex::PtexFaces;
 use super::sample::LimitSample;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
-use crate::options::{BoundaryInterpolation, SubdivOptions};
+use crate::options::SubdivOptions;
 use crate::refine::refine_uniform;
+use crate::topology::Level;
 
 /// Depth to which irregular faces are refined and cached at construction.
 pub const CACHE_DEPTH: u32 = 5;
@@ -76,7 +80,7 @@ impl Evaluator {
     pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
         let ptex = PtexFaces::new(mesh)?;
         let global = Neighbourhood::from_mesh(mesh);
-        let no_surface = faces_without_surface(mesh, &global, options);
+        let no_surface = faces_without_surface(mesh, options);
         let mut ev = Evaluator {
             mesh: mesh.clone(),
             options: *options,
@@ -140,14 +144,6 @@ impl Evaluator {
     /// Number of parametric faces: the valid range of `face` in [`Evaluator::evaluate`].
     pub fn num_parametric_faces(&self) -> usize {
         self.ptex.len()
-    }
-
-    /// Whether parametric face `face` has a limit surface (false for holes, faces without
-    /// surface under boundary interpolation "none", and out-of-range indices).
-    pub fn has_limit_surface(&self, face: u32) -> bool {
-        self.roots
-            .get(face as usize)
-            .is_some_and(|&r| r != Node::NoSurface)
     }
 
     fn leaf(&mut self, p: BicubicPatch) -> Node {
@@ -269,7 +265,8 @@ impl Evaluator {
     }
 
     /// Exact limit position and derivatives at every control vertex, in vertex order (see
-    /// [`super::vertex_limit`] for the derivatives' convention).
+    /// [`super::vertex_limit`] for the derivatives' convention), [`LimitSample::NO_SURFACE`]
+    /// for a vertex without limit surface.
     ///
     /// Errors: as [`super::limit_vertex_samples`].
     pub fn limit_vertices(&self) -> Result<Vec<LimitSample>> {
@@ -277,24 +274,70 @@ impl Evaluator {
     }
 
     /// Evaluate many points; `faces`, `u` and `v` must have the same length. Stops at the
-    /// first bad point, naming its index.
+    /// first bad point, naming its index; a point without limit surface is a bad point here
+    /// (see [`Evaluator::evaluate_points`] for the marking alternative).
     pub fn evaluate_many(&self, faces: &[u32], u: &[f64], v: &[f64]) -> Result<Vec<LimitSample>> {
-        if faces.len() != u.len() || faces.len() != v.len() {
-            return Err(Error::invalid_argument(format!(
-                "{} faces, {} u and {} v values: the three lists must have the same length",
-                faces.len(),
-                u.len(),
-                v.len()
-            )));
+        each_point(faces, u, v, |f, u, v| self.evaluate(f, u, v))
+    }
+
+    /// Whether parametric (Ptex) face `face` has a limit surface (see [`super::surface`]);
+    /// false when out of range.
+    pub fn has_surface(&self, face: u32) -> bool {
+        self.roots
+            .get(face as usize)
+            .is_some_and(|&r| r != Node::NoSurface)
+    }
+
+    /// Limit position and derivatives at `(face, u, v)` given in `domain` (see
+    /// [`super::domain`]; derivatives in that domain's units), or `None` where there is no
+    /// limit surface (a hole, a face under boundary interpolation "none" that touches the
+    /// boundary).
+    ///
+    /// Errors ([`Error::InvalidArgument`]): `face` out of range, `(u, v)` NaN or outside the
+    /// domain.
+    pub fn evaluate_in(
+        &self,
+        domain: Domain,
+        face: u32,
+        u: f64,
+        v: f64,
+    ) -> Result<Option<LimitSample>> {
+        let p = self.ptex.locate_in(domain, face, u, v)?;
+        if !self.has_surface(p.face) {
+            return Ok(None);
         }
-        let mut out = Vec::with_capacity(faces.len());
-        for i in 0..faces.len() {
-            out.push(self.evaluate(faces[i], u[i], v[i]).map_err(|e| match e {
-                Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
-                other => other,
-            })?);
-        }
-        Ok(out)
+        let s = self.evaluate(p.face, p.u, p.v)?;
+        Ok(Some(LimitSample {
+            position: s.position,
+            du: s.du * p.derivative_scale,
+            dv: s.dv * p.derivative_scale,
+        }))
+    }
+
+    /// [`Evaluator::evaluate_in`] for many points (`faces`, `u` and `v` of the same length):
+    /// `None` for each point without limit surface, the others evaluated. Stops only at a
+    /// bad point (naming its index); [`super::require_surface`] turns the result into the
+    /// strict form.
+    pub fn evaluate_points(
+        &self,
+        domain: Domain,
+        faces: &[u32],
+        u: &[f64],
+        v: &[f64],
+    ) -> Result<Vec<Option<LimitSample>>> {
+        each_point(faces, u, v, |f, u, v| self.evaluate_in(domain, f, u, v))
+    }
+
+    /// Exact limit position and derivatives at every control vertex, in vertex order, `None`
+    /// for a vertex without limit surface (see [`super::surface`]).
+    ///
+    /// Errors: as [`super::limit_vertex_samples`].
+    pub fn vertex_limits(&self) -> Result<Vec<Option<LimitSample>>> {
+        Ok(self
+            .limit_vertices()?
+            .into_iter()
+            .map(|s| s.has_surface().then_some(s))
+            .collect())
     }
 
     /// Refine `nb` on the spot until `(s, t)` lies in a regular sub-patch.
@@ -331,6 +374,32 @@ impl Evaluator {
             ))
         })
     }
+}
+
+/// `eval(faces[i], u[i], v[i])` for every point; the three lists must have the same length.
+/// An [`Error::InvalidArgument`] names the point.
+fn each_point<T>(
+    faces: &[u32],
+    u: &[f64],
+    v: &[f64],
+    eval: impl Fn(u32, f64, f64) -> Result<T>,
+) -> Result<Vec<T>> {
+    if faces.len() != u.len() || faces.len() != v.len() {
+        return Err(Error::invalid_argument(format!(
+            "{} faces, {} u and {} v values: the three lists must have the same length",
+            faces.len(),
+            u.len(),
+            v.len()
+        )));
+    }
+    (0..faces.len())
+        .map(|i| {
+            eval(faces[i], u[i], v[i]).map_err(|e| match e {
+                Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
+                other => other,
+            })
+        })
+        .collect()
 }
 
 /// One level of refinement of a neighbourhood; the children of its face 0 are faces
@@ -381,22 +450,13 @@ fn nearest_corner(s: f64, t: f64) -> usize {
 }
 
 /// Faces with no limit surface: holes, and under boundary interpolation "none" the faces at
-/// a boundary vertex that has a boundary edge not tagged infinitely sharp (Far's rule).
-fn faces_without_surface(mesh: &Mesh, nb: &Neighbourhood, options: &SubdivOptions) -> Vec<bool> {
-    let mut out = vec![false; mesh.num_faces()];
-    for &h in mesh.holes() {
-        out[h as usize] = true;
-    }
-    if options.boundary == BoundaryInterpolation::None {
-        for v in 0..mesh.num_vertices() as u32 {
-            if super::patch_regular::has_soft_boundary_edge(nb, v) {
-                for &f in nb.vertex_faces(v) {
-                    out[f as usize] = true;
-                }
-            }
-        }
-    }
-    out
+/// a boundary or non-manifold vertex with a boundary edge not tagged infinitely sharp — the
+/// holes of the base [`Level`], which follows Far's rule (see [`super::surface`]).
+fn faces_without_surface(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
+    let level = Level::from_mesh_with_options(mesh, options);
+    (0..mesh.num_faces())
+        .map(|f| level.is_face_hole(f))
+        .collect()
 }
 
 #[cfg(test)]

@@ -156,7 +156,7 @@ pub fn find_folds(evaluator: &Evaluator, settings: &FoldSettings) -> Result<Fold
         samples: 0,
     };
     for ptex in 0..evaluator.num_parametric_faces() as u32 {
-        if !evaluator.has_limit_surface(ptex) {
+        if !evaluator.has_surface(ptex) {
             continue;
         }
         let Some((base, sub)) = evaluator.ptex_faces().locate(ptex) else {

@@ -95,14 +95,8 @@ impl VertexStar {
         }
     }
 
-    /// `None` when `c` is too complex for a regular patch (repeated in a face, too many edges).
-    fn gather(nb: &Neighbourhood, c: u32) -> Option<VertexStar> {
-        let mut star = VertexStar::new();
-        star.fill(nb, c)?;
-        Some(star)
-    }
-
-    /// [`VertexStar::gather`] into `self` (reused: a star is a few hundred bytes).
+    /// The star of `c` into `self` (reused: a star is a few hundred bytes); `None` when `c`
+    /// is too complex for a regular patch (repeated in a face, too many edges).
     fn fill(&mut self, nb: &Neighbourhood, c: u32) -> Option<()> {
         self.len = 0;
         self.fan_len = 0;
@@ -419,49 +413,4 @@ pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Opt
         pts[DIAGONAL_SLOTS[k]] = nb.position(gf[(i + 2) % 4]);
     }
     Some(BicubicPatch::with_boundary(pts, boundary))
-}
-
-/// True when vertex `v` has a boundary edge (one face) that is not tagged infinitely sharp:
-/// under boundary interpolation "none", Far gives the faces at such a vertex no limit surface.
-pub fn has_soft_boundary_edge(nb: &Neighbourhood, v: u32) -> bool {
-    match VertexStar::gather(nb, v) {
-        Some(star) => star
-            .edges()
-            .iter()
-            .any(|e| e.count() == 1 && !is_infinite(nb.edge_tag(v, e.other))),
-        // A vertex repeated in a face or with very many edges: decide from the faces alone.
-        None => soft_boundary_by_scan(nb, v),
-    }
-}
-
-fn soft_boundary_by_scan(nb: &Neighbourhood, v: u32) -> bool {
-    let mut ends: Vec<u32> = Vec::new();
-    for &g in nb.vertex_faces(v) {
-        let face = nb.face(g);
-        let n = face.len();
-        for i in 0..n {
-            if face[i] == v {
-                ends.push(face[(i + 1) % n]);
-                ends.push(face[(i + n - 1) % n]);
-            }
-        }
-    }
-    // A face that repeats `v` consecutively has a degenerate edge (v, v): an edge of its own
-    // with that one face, so a boundary edge that no tag can sharpen (as in Vtr).
-    if ends.contains(&v) {
-        return true;
-    }
-    ends.sort_unstable();
-    let mut i = 0;
-    while i < ends.len() {
-        let mut j = i;
-        while j < ends.len() && ends[j] == ends[i] {
-            j += 1;
-        }
-        if j - i == 1 && !is_infinite(nb.edge_tag(v, ends[i])) {
-            return true;
-        }
-        i = j;
-    }
-    false
 }

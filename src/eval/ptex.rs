@@ -49,9 +49,15 @@ impl PtexFaces {
         self.len() == 0
     }
 
-    /// First Ptex face of control face `face` (its sub-face 0). Panics if out of range.
+    /// First Ptex face of control face `face` (its sub-face 0); `face` = the number of control
+    /// faces gives the total. Panics if out of range.
     pub fn first_of(&self, face: usize) -> u32 {
         self.first[face]
+    }
+
+    /// Number of control faces.
+    pub fn num_control_faces(&self) -> usize {
+        self.first.len() - 1
     }
 
     /// The control face of Ptex face `ptex` and, for a non-quad, its sub-face (corner) index;

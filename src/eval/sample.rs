@@ -19,6 +19,20 @@ pub struct LimitSample {
 }
 
 impl LimitSample {
+    /// The marker of a point without limit surface (see [`super::surface`]) in functions
+    /// that return plain samples: every coordinate NaN.
+    pub const NO_SURFACE: LimitSample = LimitSample {
+        position: DVec3::NAN,
+        du: DVec3::NAN,
+        dv: DVec3::NAN,
+    };
+
+    /// False for [`LimitSample::NO_SURFACE`] (a NaN position), true for a point of the
+    /// limit surface.
+    pub fn has_surface(&self) -> bool {
+        !self.position.x.is_nan()
+    }
+
     /// Unit normal `normalize(du × dv)`, or the zero vector where the derivatives are
     /// parallel (a degenerate parameterization).
     pub fn normal(&self) -> DVec3 {
@@ -44,5 +58,7 @@ mod tests {
             ..s
         };
         assert_eq!(flat.normal(), DVec3::ZERO);
+        assert!(s.has_surface() && !LimitSample::NO_SURFACE.has_surface());
+        assert!(LimitSample::NO_SURFACE.du.is_nan() && LimitSample::NO_SURFACE.dv.is_nan());
     }
 }

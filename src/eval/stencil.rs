@@ -3,7 +3,8 @@
 //! A [`StencilTable`] is stored in compressed sparse rows (CSR), the layout of OpenSubdiv's
 //! `Far::StencilTable`: row `i` holds the weights `weights[offsets[i]..offsets[i + 1]]` on
 //! the control vertices `indices[offsets[i]..offsets[i + 1]]`. Build once, apply to any
-//! number of primvar sets.
+//! number of primvar sets. A row with no entries marks a point without limit surface (see
+//! [`super::surface`]): applying it gives NaN, never a made-up point.
 
 use glam::DVec3;
 
@@ -58,15 +59,24 @@ impl StencilTable {
         (&self.indices[a..b], &self.weights[a..b])
     }
 
-    /// Weighted sum of `points` for row `i`. Panics if out of range.
+    /// Whether row `i` has no entries: a point without limit surface. Panics if out of range.
+    pub fn is_empty_row(&self, i: usize) -> bool {
+        self.offsets[i] == self.offsets[i + 1]
+    }
+
+    /// Weighted sum of `points` for row `i`; NaN for an empty row (no limit surface). Panics
+    /// if out of range.
     pub fn apply_row(&self, i: usize, points: &[DVec3]) -> DVec3 {
         let (idx, w) = self.row(i);
+        if idx.is_empty() {
+            return DVec3::NAN;
+        }
         idx.iter()
             .zip(w)
             .fold(DVec3::ZERO, |acc, (&j, &wj)| acc + points[j as usize] * wj)
     }
 
-    /// Apply every row to `points` (one point per control vertex).
+    /// Apply every row to `points` (one point per control vertex); empty rows give NaN.
     ///
     /// Errors ([`Error::InvalidArgument`]): a stencil refers to a control vertex that
     /// `points` does not have.
@@ -92,14 +102,15 @@ mod tests {
         let mut t = StencilTable::new();
         t.push_row([(0, 0.5), (2, 0.5)]);
         t.push_row([(1, 1.0)]);
-        assert_eq!(t.num_rows(), 2);
+        t.push_row([]);
+        assert_eq!(t.num_rows(), 3);
         assert_eq!(t.num_entries(), 3);
-        assert_eq!(t.offsets, vec![0, 2, 3]);
+        assert_eq!(t.offsets, vec![0, 2, 3, 3]);
+        assert!(!t.is_empty_row(1) && t.is_empty_row(2));
         let p = [DVec3::X, DVec3::Y, DVec3::new(3.0, 0.0, 4.0)];
-        assert_eq!(
-            t.apply(&p).unwrap(),
-            vec![DVec3::new(2.0, 0.0, 2.0), DVec3::Y]
-        );
+        let got = t.apply(&p).unwrap();
+        assert_eq!(got[..2], [DVec3::new(2.0, 0.0, 2.0), DVec3::Y]);
+        assert!(got[2].is_nan(), "an empty row is a point without surface");
         assert!(matches!(t.apply(&p[..2]), Err(Error::InvalidArgument(_))));
     }
 }

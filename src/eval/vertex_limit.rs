@@ -15,22 +15,26 @@
 //! `PrimvarRefiner::Limit` are not (darts, level-0 semi-sharp features, interior valence-2
 //! vertices).
 //!
+//! A vertex without limit surface (isolated, or all of its faces holes: see
+//! [`super::surface`]) gets empty stencil rows and [`LimitSample::NO_SURFACE`].
+//!
 //! Derivatives are reported at the corner of the vertex's *first face*: the first face in
 //! OpenSubdiv's vertex-face order (`Far::TopologyLevel::GetVertexFaces(v)[0]`, counter-clockwise
 //! for manifold vertices, starting at the leading boundary face on a boundary) that is not a
-//! hole, or the first face if all are holes. `du` and `dv` are in that face's parameterization
-//! as `Bfr::Surface` has it: for a quad, corner `k` at (0,0), (1,0), (1,1), (0,1); for any
-//! other face, sub-face `k` of its quadrangulation with local (0,0) at the vertex, `u`
-//! towards the midpoint of the edge to the next vertex and `v` towards the midpoint of the
-//! edge from the previous vertex. They are exact (equal to the bicubic patch's) at regular
-//! vertices: smooth valence 4, crease sectors of two faces, single-face corners, after any
-//! semi-sharp sharpness has decayed. Elsewhere the *direction* they span is OpenSubdiv's limit
-//! tangent plane (`Sdc` tangent masks: the exact plane at smooth extraordinary vertices) and
-//! their lengths are a convention (the masks scaled by 1/12 at the level where the
-//! neighbourhood became stationary, times 2^level), since the limit parameterization has a
-//! zero or unbounded derivative at an extraordinary vertex. At darts, interior valence-2
-//! vertices, crease sectors of other than two faces and corners whose first face has a
-//! smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are approximate there.
+//! hole (a vertex whose faces are all holes has no limit). `du` and `dv` are in that face's
+//! parameterization as `Bfr::Surface` has it: for a quad, corner `k` at (0,0), (1,0), (1,1),
+//! (0,1); for any other face, sub-face `k` of its quadrangulation with local (0,0) at the
+//! vertex, `u` towards the midpoint of the edge to the next vertex and `v` towards the
+//! midpoint of the edge from the previous vertex. They are exact (equal to the bicubic
+//! patch's) at regular vertices: smooth valence 4, crease sectors of two faces, single-face
+//! corners, after any semi-sharp sharpness has decayed. Elsewhere the *direction* they span is
+//! OpenSubdiv's limit tangent plane (`Sdc` tangent masks: the exact plane at smooth
+//! extraordinary vertices) and their lengths are a convention (the masks scaled by 1/12 at
+//! the level where the neighbourhood became stationary, times 2^level), since the limit
+//! parameterization has a zero or unbounded derivative at an extraordinary vertex. At darts,
+//! interior valence-2 vertices, crease sectors of other than two faces and corners whose
+//! first face has a smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are
+//! approximate there.
 
 use crate::error::Result;
 use crate::mesh::Mesh;
@@ -38,6 +42,7 @@ use crate::options::SubdivOptions;
 
 use super::sample::LimitSample;
 use super::stencil::StencilTable;
+use super::surface::vertices_with_surface_in;
 use super::vertex_ring::{self, sub, CreaseLine, Point, Ring, MAX_LEVELS};
 use crate::catmark::crease::is_infinite;
 use crate::topology::Level;
@@ -54,14 +59,19 @@ pub struct VertexLimitStencils {
 }
 
 /// Exact limit position of every control vertex as a stencil on the control vertices (one
-/// row per vertex, in vertex order).
+/// row per vertex, in vertex order; an empty row for a vertex without limit surface).
 ///
 /// Errors ([`crate::Error::NumericalFailure`]): a dart's subdivision matrix is degenerate
 /// (not seen with OpenSubdiv's rules).
 pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTable> {
     let level = Level::from_mesh_with_options(mesh, options);
+    let surface = vertices_with_surface_in(&level);
     let mut table = StencilTable::new();
     for v in 0..mesh.num_vertices() as u32 {
+        if !surface[v as usize] {
+            table.push_row([]);
+            continue;
+        }
         let local = Local::new(&level, v);
         let (p, _) = vertex_limit(options, &level, &local, v, false)?;
         table.push_row(local.sparse(&p));
@@ -70,29 +80,39 @@ pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTab
 }
 
 /// Limit position and derivative stencils of every control vertex (see the module doc for
-/// the derivatives' convention).
+/// the derivatives' convention). A vertex without limit surface has empty rows in all three
+/// tables; every other vertex has non-empty rows (a derivative that is exactly zero keeps
+/// one entry of weight 0).
 ///
 /// Errors: as [`limit_stencils`].
 pub fn vertex_limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<VertexLimitStencils> {
     let level = Level::from_mesh_with_options(mesh, options);
+    let surface = vertices_with_surface_in(&level);
     let mut out = VertexLimitStencils {
         position: StencilTable::new(),
         du: StencilTable::new(),
         dv: StencilTable::new(),
     };
     for v in 0..mesh.num_vertices() as u32 {
+        if !surface[v as usize] {
+            for t in [&mut out.position, &mut out.du, &mut out.dv] {
+                t.push_row([]);
+            }
+            continue;
+        }
         let local = Local::new(&level, v);
         let (p, d) = vertex_limit(options, &level, &local, v, true)?;
         let (du, dv) = d.unwrap_or_else(|| (vec![0.0; p.len()], vec![0.0; p.len()]));
         out.position.push_row(local.sparse(&p));
-        out.du.push_row(local.sparse(&du));
-        out.dv.push_row(local.sparse(&dv));
+        out.du.push_row(local.sparse_keeping(&du, v));
+        out.dv.push_row(local.sparse_keeping(&dv, v));
     }
     Ok(out)
 }
 
 /// Limit position and derivatives at every control vertex, in vertex order (see the module
-/// doc for the derivatives' convention; [`LimitSample::normal`] gives the unit normal).
+/// doc for the derivatives' convention; [`LimitSample::normal`] gives the unit normal);
+/// [`LimitSample::NO_SURFACE`] for a vertex without limit surface.
 ///
 /// Errors: as [`limit_stencils`].
 pub fn limit_vertex_samples(mesh: &Mesh, options: &SubdivOptions) -> Result<Vec<LimitSample>> {
@@ -143,6 +163,17 @@ impl Local {
             .filter(|(_, &w)| w != 0.0)
             .map(|(&g, &w)| (g, w))
     }
+
+    /// [`Local::sparse`], but an all-zero row keeps the entry `(v, 0)`: an empty row would
+    /// mean "no limit surface".
+    fn sparse_keeping(&self, p: &[f64], v: u32) -> Vec<(u32, f64)> {
+        let row: Vec<(u32, f64)> = self.sparse(p).collect();
+        if row.is_empty() {
+            vec![(v, 0.0)]
+        } else {
+            row
+        }
+    }
 }
 
 type Derivatives = Option<(Point, Point)>;
@@ -157,10 +188,7 @@ fn vertex_limit(
     let vi = v as usize;
     let faces = level.vertex_faces(vi);
     let center = local.unit(v);
-    if faces.is_empty() {
-        // An isolated vertex has no limit surface; it stays put.
-        return Ok((center, None));
-    }
+    // The callers skip vertices without limit surface: `faces` has one that is not a hole.
     let first = faces
         .iter()
         .position(|&f| !level.is_face_hole(f as usize))
@@ -393,14 +421,30 @@ mod tests {
         assert!(close(lim[0], (p[1] + p[0] * 4.0 + p[4]) / 6.0, 1e-15));
         let t = limit_stencils(&mesh, &SubdivOptions::default()).unwrap();
         assert_eq!(t.row(0), (&[0u32][..], &[1.0][..]));
-        // under "none" boundary edges are still sharp for vertex data
+        // Under "none" every face of this grid touches the boundary: no vertex has a
+        // limit surface, every row is empty.
         let none = SubdivOptions {
             boundary: BoundaryInterpolation::None,
             ..SubdivOptions::default()
         };
-        assert_eq!(limit_stencils(&mesh, &none).unwrap(), {
-            limit_stencils(&mesh, &edge_only).unwrap()
-        });
+        let t = limit_stencils(&mesh, &none).unwrap();
+        assert_eq!((t.num_rows(), t.num_entries()), (12, 0));
+        // On a 4 x 4 grid the 4 inner faces keep their surface: the 9 vertices around them
+        // have the limits of edge-only (boundary edges are sharp for vertex data), the 16
+        // on the border none.
+        let mesh = Mesh::from_parts(grid(4, 4, bumpy)).unwrap();
+        let (a, b) = (
+            limit_stencils(&mesh, &none).unwrap(),
+            limit_stencils(&mesh, &edge_only).unwrap(),
+        );
+        for v in 0..25 {
+            let (i, j) = (v % 5, v / 5);
+            if (1..4).contains(&i) && (1..4).contains(&j) {
+                assert_eq!(a.row(v), b.row(v), "vertex {v}");
+            } else {
+                assert!(a.is_empty_row(v), "vertex {v}");
+            }
+        }
     }
 
     #[test]
@@ -561,8 +605,12 @@ mod tests {
         assert!((s[4].position.x - 0.5).abs() < 1e-15 && (s[4].position.y - 0.5).abs() < 1e-15);
         assert!(s[4].position.z < 1.0 && s[4].position.z > 0.0);
         assert!(s[4].normal().z > 0.999_999, "{:?}", s[4].normal());
-        // the isolated vertex stays put
-        assert_eq!(s[5].position, DVec3::splat(9.0));
+        // the isolated vertex has no limit surface: marked, no made-up position
+        assert!(!s[5].has_surface() && s[5].du.is_nan() && s[5].dv.is_nan());
+        let t = vertex_limit_stencils(&mesh, &SubdivOptions::default()).unwrap();
+        for table in [&t.position, &t.du, &t.dv] {
+            assert!((0..5).all(|v| !table.is_empty_row(v)) && table.is_empty_row(5));
+        }
     }
 
     /// A bumpy 4×4 grid with semi-sharp creases of several sharpness values, a dart (the

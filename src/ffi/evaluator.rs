@@ -2,7 +2,7 @@
 
 use std::mem::MaybeUninit;
 
-use crate::eval::{Evaluator, LimitSample};
+use crate::eval::{require_surface, Domain, Evaluator, LimitSample};
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::mesh::{mesh_arg, profsubd_mesh};
@@ -21,6 +21,8 @@ use crate::ffi::status::profsubd_status;
 /// parametric faces (sub-face k: (0,0) at vertex k, (1,0) at the middle of edge k -> k+1,
 /// (1,1) at the face centre, (0,1) at the middle of edge k-1 -> k), as `Far::PtexIndices`
 /// numbers them; `profsubd_evaluator_face_to_parametric` gives the numbers.
+/// `profsubd_evaluator_evaluate_points` also takes Bfr's parameterization
+/// (`PROFSUBD_DOMAIN_BFR`) and marks points without limit surface instead of failing.
 pub struct profsubd_evaluator {
     _private: [u8; 0],
 }
@@ -99,18 +101,87 @@ pub unsafe extern "C" fn profsubd_evaluator_face_to_parametric(
     })
 }
 
+/// An optional output array of `n` items of `width` elements each.
+unsafe fn optional_out<'a, T>(
+    p: *mut T,
+    n: usize,
+    width: usize,
+    name: &str,
+) -> FfiResult<Option<&'a mut [MaybeUninit<T>]>> {
+    if p.is_null() {
+        return Ok(None);
+    }
+    CopyOut::new(n, std::ptr::null_mut())?
+        .buffer(p, width, name)
+        .map(Some)
+}
+
 /// An optional output array of `n` points (3 doubles each).
 unsafe fn optional_points<'a>(
     p: *mut f64,
     n: usize,
     name: &str,
 ) -> FfiResult<Option<&'a mut [MaybeUninit<f64>]>> {
-    if p.is_null() {
-        return Ok(None);
+    optional_out(p, n, 3, name)
+}
+
+/// Values for the `domain` of `profsubd_evaluator_evaluate_points` (passed as `int32_t`):
+/// how a point `(face, u, v)` is meant.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum profsubd_domain {
+    /// OpenSubdiv's Ptex faces (`Far::PtexIndices`, `Far::PatchMap`): `face` is a parametric
+    /// face (a quad is one, a face with N != 4 vertices N, one per corner), `(u, v)` in
+    /// `[0, 1]²`. The domain of `profsubd_evaluator_evaluate`.
+    PROFSUBD_DOMAIN_PTEX = 0,
+    /// Bfr's base faces (`Bfr::SurfaceFactory`, `Bfr::Parameterization`): `face` is the
+    /// control face; a quad has `(u, v)` in `[0, 1]²`, any other face (triangles too) N
+    /// sub-faces of side 1/2 tiled row by row in ceil(sqrt(N)) columns, sub-face k (Ptex
+    /// coordinates (s, t)) at `(k % columns + s / 2, k / columns + t / 2)`. Derivatives are
+    /// with respect to these (u, v): twice the Ptex ones on a sub-face.
+    PROFSUBD_DOMAIN_BFR = 1,
+}
+
+fn domain_arg(domain: i32) -> FfiResult<Domain> {
+    use profsubd_domain::*;
+    match domain {
+        d if d == PROFSUBD_DOMAIN_PTEX as i32 => Ok(Domain::Ptex),
+        d if d == PROFSUBD_DOMAIN_BFR as i32 => Ok(Domain::Bfr),
+        d => Err(FfiError::invalid_argument(format!(
+            "domain value {d} is out of range; expected 0 (PROFSUBD_DOMAIN_PTEX) or 1 \
+             (PROFSUBD_DOMAIN_BFR)"
+        ))),
     }
-    CopyOut::new(n, std::ptr::null_mut())?
-        .buffer(p, 3, name)
-        .map(Some)
+}
+
+fn strict_arg(strict: i32) -> FfiResult<bool> {
+    match strict {
+        0 => Ok(false),
+        1 => Ok(true),
+        s => Err(FfiError::invalid_argument(format!(
+            "strict value {s} is out of range; expected 0 or 1"
+        ))),
+    }
+}
+
+/// Write the samples (`None`: NaN) and the has-surface mask into the caller's buffers.
+fn write_marked(
+    samples: &[Option<LimitSample>],
+    pos: &mut [MaybeUninit<f64>],
+    du: Option<&mut [MaybeUninit<f64>]>,
+    dv: Option<&mut [MaybeUninit<f64>]>,
+    has_surface: Option<&mut [MaybeUninit<u8>]>,
+) {
+    let plain: Vec<LimitSample> = samples
+        .iter()
+        .map(|s| s.unwrap_or(LimitSample::NO_SURFACE))
+        .collect();
+    write_points(Some(pos), &plain, |s| s.position);
+    write_points(du, &plain, |s| s.du);
+    write_points(dv, &plain, |s| s.dv);
+    if let Some(mask) = has_surface {
+        fill(mask, samples.iter().map(|s| u8::from(s.is_some())));
+    }
 }
 
 fn write_points(
@@ -130,7 +201,8 @@ fn write_points(
 ///
 /// Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, message naming the point): a face out of range,
 /// u or v outside [0, 1] or NaN, a hole face, a face without limit surface (boundary
-/// interpolation "none"). Nothing is written on error.
+/// interpolation "none"). Nothing is written on error. This is
+/// `profsubd_evaluator_evaluate_points` with `PROFSUBD_DOMAIN_PTEX`, `strict` = 1 and no mask.
 #[no_mangle]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn profsubd_evaluator_evaluate(
@@ -143,18 +215,67 @@ pub unsafe extern "C" fn profsubd_evaluator_evaluate(
     du: *mut f64,
     dv: *mut f64,
 ) -> profsubd_status {
+    profsubd_evaluator_evaluate_points(
+        evaluator,
+        profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
+        1,
+        faces,
+        u,
+        v,
+        n,
+        positions,
+        du,
+        dv,
+        std::ptr::null_mut(),
+    )
+}
+
+/// Evaluate `n` points `(faces[i], u[i], v[i])` given in `domain` (a `profsubd_domain`
+/// value): limit position into `positions` (3 doubles per point), and, when not NULL, the
+/// derivatives with respect to the domain's u and v into `du` and `dv` (3 doubles per point
+/// each) and into `has_surface[i]` 1 for a point of the limit surface, 0 for a point without
+/// one (a hole; under boundary interpolation "none", a face at the boundary).
+///
+/// A point without limit surface gets NaN in `positions`, `du` and `dv` (and 0 in
+/// `has_surface`), the others are evaluated: one such point does not fail the batch. With
+/// `strict` = 1 it does: `PROFSUBD_ERROR_INVALID_ARGUMENT` naming the first such point, and
+/// nothing is written (`strict` = 0: marking).
+///
+/// Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, message naming the point): `domain` or
+/// `strict` out of range, a face out of range, (u, v) NaN or outside the domain (for
+/// `PROFSUBD_DOMAIN_BFR`, in a gap between sub-face squares too). Nothing is written on
+/// error.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn profsubd_evaluator_evaluate_points(
+    evaluator: *const profsubd_evaluator,
+    domain: i32,
+    strict: i32,
+    faces: *const u32,
+    u: *const f64,
+    v: *const f64,
+    n: usize,
+    positions: *mut f64,
+    du: *mut f64,
+    dv: *mut f64,
+    has_surface: *mut u8,
+) -> profsubd_status {
     status_call(|| {
         let ev = evaluator_arg(evaluator)?;
+        let domain = domain_arg(domain)?;
+        let strict = strict_arg(strict)?;
         let faces = arg_slice(faces, n, "faces")?;
         let us = arg_slice(u, n, "u")?;
         let vs = arg_slice(v, n, "v")?;
         let pos = CopyOut::new(n, std::ptr::null_mut())?.buffer(positions, 3, "positions")?;
         let du = optional_points(du, n, "du")?;
         let dv = optional_points(dv, n, "dv")?;
-        let samples = ev.evaluate_many(faces, us, vs)?;
-        write_points(Some(pos), &samples, |s| s.position);
-        write_points(du, &samples, |s| s.du);
-        write_points(dv, &samples, |s| s.dv);
+        let mask = optional_out(has_surface, n, 1, "has_surface")?;
+        let samples = ev.evaluate_points(domain, faces, us, vs)?;
+        if strict {
+            require_surface(samples.clone(), "point")?;
+        }
+        write_marked(&samples, pos, du, dv, mask);
         Ok(())
     })
 }
@@ -162,7 +283,9 @@ pub unsafe extern "C" fn profsubd_evaluator_evaluate(
 /// Exact limit position of every control vertex, in vertex order, into `positions` (3
 /// doubles per vertex), and when not NULL the derivatives into `du` and `dv` (3 doubles per
 /// vertex each, with respect to the (u, v) of the vertex's first face, as OpenSubdiv orders
-/// faces around a vertex). `capacity` and `*needed` count vertices (copy-out protocol).
+/// faces around a vertex). A vertex without limit surface (isolated, or all its faces holes)
+/// gets NaN; `profsubd_evaluator_limit_vertices_masked` also says which. `capacity` and
+/// `*needed` count vertices (copy-out protocol).
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_evaluator_limit_vertices(
     evaluator: *const profsubd_evaluator,
@@ -172,23 +295,54 @@ pub unsafe extern "C" fn profsubd_evaluator_limit_vertices(
     capacity: usize,
     needed: *mut usize,
 ) -> profsubd_status {
+    profsubd_evaluator_limit_vertices_masked(
+        evaluator,
+        0,
+        positions,
+        du,
+        dv,
+        std::ptr::null_mut(),
+        capacity,
+        needed,
+    )
+}
+
+/// Like `profsubd_evaluator_limit_vertices`, and when `has_surface` is not NULL, 1 per vertex
+/// with a limit position, 0 per vertex without (isolated, or all its faces holes: OpenSubdiv
+/// gives a vertex a limit when one of its faces has a limit surface), whose entries in
+/// `positions`, `du` and `dv` are NaN. With `strict` = 1 a vertex without limit surface is
+/// an error instead (`PROFSUBD_ERROR_INVALID_ARGUMENT` naming the first one; nothing
+/// written). `capacity` and `*needed` count vertices (copy-out protocol).
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn profsubd_evaluator_limit_vertices_masked(
+    evaluator: *const profsubd_evaluator,
+    strict: i32,
+    positions: *mut f64,
+    du: *mut f64,
+    dv: *mut f64,
+    has_surface: *mut u8,
+    capacity: usize,
+    needed: *mut usize,
+) -> profsubd_status {
     status_call(|| {
         let ev = evaluator_arg(evaluator)?;
+        let strict = strict_arg(strict)?;
         let c = CopyOut::new(capacity, needed)?;
         let pos = c.buffer(positions, 3, "positions")?;
         let du = optional_points(du, capacity, "du")?;
         let dv = optional_points(dv, capacity, "dv")?;
+        let mask = optional_out(has_surface, capacity, 1, "has_surface")?;
         let n = ev.mesh().num_vertices();
         let samples = if n <= capacity {
-            ev.limit_vertices()?
+            ev.vertex_limits()?
         } else {
             Vec::new()
         };
-        c.finish(n, "vertices", || {
-            write_points(Some(pos), &samples, |s| s.position);
-            write_points(du, &samples, |s| s.du);
-            write_points(dv, &samples, |s| s.dv);
-        })
+        if strict {
+            require_surface(samples.clone(), "vertex")?;
+        }
+        c.finish(n, "vertices", || write_marked(&samples, pos, du, dv, mask))
     })
 }
 

@@ -138,7 +138,7 @@ fn bad_input_gives_a_status_and_a_message_and_writes_nothing() {
             call(ev, &[1], 0.5, 0.5, p.as_mut_ptr()),
             PROFSUBD_ERROR_INVALID_ARGUMENT
         );
-        assert!(last_error().contains("hole"));
+        assert!(last_error().contains("point 0 has no limit surface"));
         assert_eq!(
             call(ev, &f, 0.5, 0.5, null_mut()),
             PROFSUBD_ERROR_NULL_ARGUMENT
@@ -257,4 +257,266 @@ fn corners_at_extraordinary_vertices_are_the_vertex_limits() {
     // (0, 0) of its sub-face 2.
     let apex = ev.evaluate(5 + 2, 0.0, 0.0).unwrap();
     assert!((apex.position - limits[8].position).length() < 1e-15);
+}
+
+/// The test mesh with one more, isolated, vertex (9): no limit surface there.
+fn evaluator_with_isolated_vertex() -> *mut profsubd_evaluator {
+    let mut parts = mesh().into_parts();
+    parts.positions.push(DVec3::splat(4.0));
+    let m = new_mesh_handle(Mesh::from_parts(parts).unwrap());
+    let mut ev = null_mut();
+    unsafe {
+        assert_eq!(profsubd_evaluator_new(m, null(), &mut ev), PROFSUBD_OK);
+        profsubd_mesh_free(m);
+    }
+    ev
+}
+
+const PTEX: i32 = profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32;
+const BFR: i32 = profsubd_domain::PROFSUBD_DOMAIN_BFR as i32;
+
+#[test]
+fn evaluate_points_marks_points_without_surface_and_takes_both_domains() {
+    let ev = evaluator();
+    let rust = Evaluator::new(&mesh(), &SubdivOptions::default()).unwrap();
+    // Ptex: face 1 is a hole; face 7 is sub-face 2 of triangle 5. Bfr: the same points,
+    // sub-face 2 of a triangle at tile (0, 1).
+    let (pf, pu, pv) = ([0u32, 1, 7], [0.25, 0.5, 0.5], [0.75, 0.5, 0.25]);
+    let (bf, bu, bv) = ([0u32, 1, 5], [0.25, 0.5, 0.25], [0.75, 0.5, 1.125]);
+    let mut out = [[0.0f64; 9]; 6];
+    let mut masks = [[7u8; 3]; 2];
+    unsafe {
+        for (d, (f, u, v)) in [(PTEX, (&pf, &pu, &pv)), (BFR, (&bf, &bu, &bv))] {
+            let k = if d == PTEX { 0 } else { 3 };
+            let [p, du, dv] = &mut out[k..k + 3] else {
+                unreachable!()
+            };
+            let st = profsubd_evaluator_evaluate_points(
+                ev,
+                d,
+                0,
+                f.as_ptr(),
+                u.as_ptr(),
+                v.as_ptr(),
+                3,
+                p.as_mut_ptr(),
+                du.as_mut_ptr(),
+                dv.as_mut_ptr(),
+                masks[k / 3].as_mut_ptr(),
+            );
+            assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+        }
+        // Strict: the hole fails the batch, naming the point, and nothing is written.
+        let mut p = [5.0f64; 9];
+        let mut mask = [5u8; 3];
+        let st = profsubd_evaluator_evaluate_points(
+            ev,
+            PTEX,
+            1,
+            pf.as_ptr(),
+            pu.as_ptr(),
+            pv.as_ptr(),
+            3,
+            p.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            mask.as_mut_ptr(),
+        );
+        assert_eq!(st, PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert!(
+            last_error().contains("point 1 has no limit surface (strict mode)"),
+            "{}",
+            last_error()
+        );
+        assert_eq!((p, mask), ([5.0; 9], [5; 3]));
+        // Strict without such a point; no mask or derivatives asked for.
+        let st = profsubd_evaluator_evaluate_points(
+            ev,
+            BFR,
+            1,
+            bf.as_ptr(),
+            bu.as_ptr(),
+            bv.as_ptr(),
+            1,
+            p.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_OK);
+        assert_eq!(p[..3], out[0][..3]);
+        profsubd_evaluator_free(ev);
+    }
+    assert_eq!(masks, [[1, 0, 1]; 2]);
+    for i in [0, 2] {
+        let s = rust.evaluate(pf[i], pu[i], pv[i]).unwrap();
+        let scale = if i == 2 { 2.0 } else { 1.0 };
+        let r = 3 * i..3 * i + 3;
+        assert_eq!(out[0][r.clone()], s.position.to_array());
+        assert_eq!(out[1][r.clone()], s.du.to_array());
+        assert_eq!(out[3][r.clone()], s.position.to_array());
+        assert_eq!(out[4][r.clone()], (s.du * scale).to_array());
+        assert_eq!(out[5][r], (s.dv * scale).to_array());
+    }
+    for (k, a) in out.iter().enumerate() {
+        assert!(a[3..6].iter().all(|x| x.is_nan()), "{k}: {a:?}");
+    }
+}
+
+#[test]
+fn evaluate_points_rejects_bad_input_and_writes_nothing() {
+    let ev = evaluator();
+    let (f, h) = ([0u32], [0.5]);
+    let mut p = [3.0f64; 3];
+    let mut mask = [3u8];
+    unsafe {
+        let call = |ev, domain, strict, faces: &[u32], u: f64, p: *mut f64, mask: *mut u8| {
+            profsubd_evaluator_evaluate_points(
+                ev,
+                domain,
+                strict,
+                faces.as_ptr(),
+                &u,
+                h.as_ptr(),
+                1,
+                p,
+                null_mut(),
+                null_mut(),
+                mask,
+            )
+        };
+        let pm = (p.as_mut_ptr(), mask.as_mut_ptr());
+        assert_eq!(
+            call(null(), PTEX, 0, &f, 0.5, pm.0, pm.1),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        let garbage = [0u64; 4];
+        assert_eq!(
+            call(garbage.as_ptr().cast(), PTEX, 0, &f, 0.5, pm.0, pm.1),
+            PROFSUBD_ERROR_INVALID_HANDLE
+        );
+        assert_eq!(
+            call(ev, 2, 0, &f, 0.5, pm.0, pm.1),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("domain value 2"), "{}", last_error());
+        assert_eq!(
+            call(ev, PTEX, -1, &f, 0.5, pm.0, pm.1),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("strict value -1"), "{}", last_error());
+        assert_eq!(
+            call(ev, BFR, 0, &[9], 0.5, pm.0, pm.1),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("point 0: face 9 is out of range; the mesh has 9 faces"));
+        // Triangle 5 in Bfr's domain: (0.6, 0.5) is in the gap between sub-face squares.
+        assert_eq!(
+            call(ev, BFR, 0, &[5], 0.6, pm.0, pm.1),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("outside the Bfr domain of face 5"));
+        assert_eq!(
+            call(ev, PTEX, 0, &f, f64::NAN, pm.0, pm.1),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            call(ev, PTEX, 0, &f, 0.5, null_mut(), pm.1),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        let st = profsubd_evaluator_evaluate_points(
+            ev,
+            PTEX,
+            0,
+            null(),
+            h.as_ptr(),
+            h.as_ptr(),
+            1,
+            p.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_ERROR_NULL_ARGUMENT);
+        assert_eq!((p, mask), ([3.0; 3], [3]));
+        profsubd_evaluator_free(ev);
+    }
+}
+
+#[test]
+fn limit_vertices_mark_the_isolated_vertex() {
+    let ev = evaluator_with_isolated_vertex();
+    let (mut p, mut du, mut dv) = (vec![0.0; 30], vec![0.0; 30], vec![0.0; 30]);
+    let mut mask = vec![7u8; 10];
+    let mut needed = 0;
+    // Positions into `out`, no derivatives or mask.
+    let positions_only = |ev, strict, out: &mut Vec<f64>, needed: &mut usize| unsafe {
+        profsubd_evaluator_limit_vertices_masked(
+            ev,
+            strict,
+            out.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            null_mut(),
+            10,
+            needed,
+        )
+    };
+    unsafe {
+        for (capacity, want) in [(9, PROFSUBD_ERROR_BUFFER_TOO_SMALL), (10, PROFSUBD_OK)] {
+            let st = profsubd_evaluator_limit_vertices_masked(
+                ev,
+                0,
+                p.as_mut_ptr(),
+                du.as_mut_ptr(),
+                dv.as_mut_ptr(),
+                mask.as_mut_ptr(),
+                capacity,
+                &mut needed,
+            );
+            assert_eq!(st, want, "{}", last_error());
+            assert_eq!(needed, 10);
+            if capacity == 9 {
+                assert_eq!((p[0], mask[0]), (0.0, 7), "nothing written");
+            }
+        }
+        // The plain call writes the same, NaN included.
+        let mut q = vec![0.0; 30];
+        let st = profsubd_evaluator_limit_vertices(
+            ev,
+            q.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+            10,
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_OK);
+        assert!(q[..27] == p[..27] && q[27..].iter().all(|x| x.is_nan()));
+        // Strict: an error naming the vertex, nothing written.
+        let mut r = vec![1.0; 30];
+        assert_eq!(
+            positions_only(ev, 1, &mut r, &mut needed),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert!(last_error().contains("vertex 9 has no limit surface"));
+        assert_eq!(
+            positions_only(ev, 2, &mut r, &mut needed),
+            PROFSUBD_ERROR_INVALID_ARGUMENT
+        );
+        assert_eq!(
+            positions_only(null(), 0, &mut r, &mut needed),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        assert_eq!(r, vec![1.0; 30]);
+        profsubd_evaluator_free(ev);
+    }
+    let want = limit_vertex_samples(&mesh(), &SubdivOptions::default()).unwrap();
+    assert_eq!(mask, [1, 1, 1, 1, 1, 1, 1, 1, 1, 0]);
+    for (i, s) in want.iter().enumerate() {
+        assert_eq!(&p[3 * i..3 * i + 3], &s.position.to_array());
+        assert_eq!(&dv[3 * i..3 * i + 3], &s.dv.to_array());
+    }
+    for a in [&p, &du, &dv] {
+        assert!(a[27..].iter().all(|x| x.is_nan()));
+    }
 }

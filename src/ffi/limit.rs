@@ -45,8 +45,9 @@ unsafe fn table_arg<'a>(p: *const profsubd_stencil_table) -> FfiResult<&'a Stenc
 /// Build the limit stencils of every control vertex of `mesh` under `options` (NULL: the
 /// mesh's tags, then the defaults), one row per vertex in vertex order. `quantity` is
 /// `PROFSUBD_LIMIT_POSITION` (the exact limit position, also at darts and semi-sharp
-/// features), `PROFSUBD_LIMIT_DU` or `PROFSUBD_LIMIT_DV`. An isolated vertex's row is the
-/// vertex itself (position) or empty (derivatives).
+/// features), `PROFSUBD_LIMIT_DU` or `PROFSUBD_LIMIT_DV`. A vertex without limit surface
+/// (isolated, or all its faces holes) has an empty row (`offsets[i] == offsets[i + 1]`),
+/// which `profsubd_stencil_table_apply` turns into NaN; every other row has entries.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_limit_stencils_new(
     mesh: *const profsubd_mesh,
@@ -158,7 +159,8 @@ pub unsafe extern "C" fn profsubd_stencil_table_get_weights(
 }
 
 /// Apply every row to `points` (`num_points` points of 3 doubles, one per control vertex)
-/// and write one point (3 doubles) per row into `out`. `capacity` and `*needed` count points
+/// and write one point (3 doubles) per row into `out`; an empty row (no limit surface) gives
+/// NaN. `capacity` and `*needed` count points
 /// (copy-out protocol). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` if a stencil refers to a
 /// control vertex beyond `num_points`.
 #[no_mangle]

@@ -193,3 +193,45 @@ fn tables_copy_out_and_apply_as_the_rust_api() {
         }
     }
 }
+
+#[test]
+fn a_vertex_without_surface_has_an_empty_row_applied_as_nan() {
+    // The cube with an isolated ninth vertex.
+    let mut parts = mesh().into_parts();
+    parts.positions.push(DVec3::splat(3.0));
+    let m = new_mesh_handle(Mesh::from_parts(parts).unwrap());
+    let points: Vec<f64> = (0..27).map(|i| f64::from(i) * 0.1).collect();
+    for q in 0..3 {
+        unsafe {
+            let mut t = null_mut();
+            assert_eq!(
+                profsubd_limit_stencils_new(m, null(), q, &mut t),
+                PROFSUBD_OK
+            );
+            let mut offsets = [0u32; 10];
+            let mut needed = 0;
+            assert_eq!(
+                profsubd_stencil_table_get_offsets(t, offsets.as_mut_ptr(), 10, &mut needed),
+                PROFSUBD_OK
+            );
+            assert!((0..8).all(|i| offsets[i] < offsets[i + 1]), "{offsets:?}");
+            assert_eq!(offsets[8], offsets[9]);
+            let mut out = [0.0f64; 27];
+            assert_eq!(
+                profsubd_stencil_table_apply(
+                    t,
+                    points.as_ptr(),
+                    9,
+                    out.as_mut_ptr(),
+                    9,
+                    &mut needed
+                ),
+                PROFSUBD_OK
+            );
+            assert!(out[..24].iter().all(|x| x.is_finite()));
+            assert!(out[24..].iter().all(|x| x.is_nan()));
+            profsubd_stencil_table_free(t);
+        }
+    }
+    unsafe { profsubd_mesh_free(m) };
+}

@@ -10,9 +10,9 @@ use glam::DVec3;
 
 use super::{fit_limit, FitReport};
 use crate::error::{Error, Result};
+use crate::eval::vertices_with_surface;
 use crate::mesh::{Mesh, MeshParts};
 use crate::options::{BoundaryInterpolation, CreaseMethod, PartialOptions, SubdivOptions};
-use crate::topology::Level;
 
 /// The subdivision options a construction is fitted under. The triangle rule does not apply:
 /// the constructions make quads only.
@@ -77,20 +77,19 @@ pub fn fit_cage(mut parts: MeshParts, options: FitOptions) -> Result<FittedCage>
     Ok(FittedCage { mesh, targets, fit })
 }
 
-/// Whether every vertex of `mesh` lies on the limit surface under `options`: a vertex all of
-/// whose faces have no limit surface cannot interpolate anything. That happens under
+/// Whether every vertex of `mesh` lies on the limit surface under `options`: a vertex without
+/// limit surface ([`crate::eval::surface`]) cannot interpolate anything. That happens under
 /// boundary interpolation *none* (OpenSubdiv makes the faces at an open boundary holes) and
 /// would otherwise give a fit to a limit that no evaluator shows.
 ///
 /// Errors: [`Error::InvalidArgument`] naming the first such vertex, its data point and the
 /// remedies.
 pub fn check_limit_exists(mesh: &Mesh, options: &SubdivOptions) -> Result<()> {
-    let level = Level::from_mesh_with_options(mesh, options);
-    let without: Vec<usize> = (0..mesh.num_vertices())
-        .filter(|&v| {
-            let faces = level.vertex_faces(v);
-            !faces.is_empty() && faces.iter().all(|&f| level.is_face_hole(f as usize))
-        })
+    let without: Vec<usize> = vertices_with_surface(mesh, options)
+        .iter()
+        .enumerate()
+        .filter(|(_, &has)| !has)
+        .map(|(v, _)| v)
         .collect();
     let Some(&first) = without.first() else {
         return Ok(());
@@ -100,7 +99,7 @@ pub fn check_limit_exists(mesh: &Mesh, options: &SubdivOptions) -> Result<()> {
         "boundary interpolation none makes the faces at an open boundary holes, as \
          OpenSubdiv does"
     } else {
-        "all their faces are holes"
+        "they are isolated, or all their faces are holes"
     };
     Err(Error::invalid_argument(format!(
         "cannot interpolate the data points of {} (the first: vertex {first} at \

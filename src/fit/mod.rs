@@ -269,7 +269,9 @@ impl<'a> From<&'a StencilTable> for CsrRef<'a> {
 /// [`RELATIVE_TOLERANCE`] × the targets' bounding-box diagonal. Topology and tags are kept.
 ///
 /// Errors: [`Error::InvalidArgument`] if the target count differs from the vertex count;
-/// [`Error::NumericalFailure`] if the stencil matrix is singular or the tolerance is missed.
+/// [`Error::NumericalFailure`] if the stencil matrix is singular or the tolerance is missed
+/// (a vertex without limit surface has an empty stencil row, so a mesh with one is singular:
+/// [`cage::check_limit_exists`] names such vertices first).
 pub fn fit_limit(
     mesh: &Mesh,
     options: &SubdivOptions,

@@ -75,7 +75,7 @@ impl Evaluator {
     /// `u32`; errors of the refinement of an irregular neighbourhood.
     pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
         let ptex = PtexFaces::new(mesh)?;
-        let global = Neighbourhood::from_mesh(mesh);
+        let global = Neighbourhood::from_mesh(mesh, options);
         let no_surface = faces_without_surface(mesh, &global, options);
         let mut ev = Evaluator {
             mesh: mesh.clone(),

@@ -41,17 +41,14 @@
 
 #include "capi_mesh.h"
 #include "far_points.h"
+#include "osd_references.h"
 #include "osd_shape.h"
 #include "random_mesh.h"
 #include "test_support.h"
 
 #include <profsubd.h>
 
-#include <opensubdiv/bfr/refinerSurfaceFactory.h>
 #include <opensubdiv/bfr/surface.h>
-#include <opensubdiv/far/patchMap.h>
-#include <opensubdiv/far/patchTable.h>
-#include <opensubdiv/far/patchTableFactory.h>
 #include <opensubdiv/far/ptexIndices.h>
 #include <opensubdiv/sdc/crease.h>
 
@@ -336,31 +333,13 @@ void DeepRun::run(const std::string &label, const OsdShape &shape, const Sdc::Op
             int2_face[vf[i]] = true;
         }
     }
-    using Factory = Bfr::RefinerSurfaceFactory<>;
-    Factory::Options fo;
-    fo.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
-    Factory cached(*base_refiner, fo);
-    Factory::Options fu = fo;
-    fu.EnableCaching(false);
-    Factory uncached(*base_refiner, fu);
-
-    std::unique_ptr<Far::TopologyRefiner> adaptive;
-    std::unique_ptr<Far::PatchTable> table;
-    std::unique_ptr<Far::PatchMap> pmap;
-    std::vector<profsubd_test::FarPoint> patch_points;
+    profsubd_test::BfrFactories bfr_factories(*base_refiner);
+    Bfr::RefinerSurfaceFactory<> &cached = bfr_factories.cached, &uncached = bfr_factories.uncached;
+    std::unique_ptr<profsubd_test::PatchTableEvaluator> patch_table;
     if (has_dart2) {
         ++fig_.patch_skipped_meshes;
     } else {
-        adaptive = profsubd_test::build_refiner(shape, opts);
-        Far::PatchTableFactory::Options po(10);
-        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
-        po.useInfSharpPatch = true;
-        adaptive->RefineAdaptive(po.GetRefineAdaptiveOptions());
-        table.reset(Far::PatchTableFactory::Create(*adaptive, po));
-        pmap.reset(new Far::PatchMap(*table));
-        int nref = adaptive->GetNumVerticesTotal(), nloc = table->GetNumLocalPoints();
-        patch_points = profsubd_test::refine_points(*adaptive, shape.positions, nloc);
-        if (nloc > 0) table->ComputeLocalPointValues(patch_points.data(), patch_points.data() + nref);
+        patch_table.reset(new profsubd_test::PatchTableEvaluator(shape, opts));
     }
 
     // Base faces touching a face that repeats a vertex.
@@ -419,20 +398,9 @@ void DeepRun::run(const std::string &label, const OsdShape &shape, const Sdc::Op
         double d = norm(V3{p[0], p[1], p[2]} - want) / diag;
         fig_.ours.add(d, where.str());
         if (!c_.check(d <= kTolerance, where.str() + ": profsubd off by " + std::to_string(d) + " x diagonal")) return;
-        if (table && patch_exact) {
-            const Far::PatchTable::PatchHandle *h = pmap->FindPatch(ptex_face, u, v);
-            if (h) {
-                double wp[20];
-                table->EvaluateBasis(*h, u, v, wp);
-                auto cvs = table->GetPatchVertices(*h);
-                V3 tp;
-                for (int k = 0; k < cvs.size(); ++k) {
-                    const auto &q = patch_points[cvs[k]].p;
-                    tp = tp + wp[k] * V3{q[0], q[1], q[2]};
-                }
-                fig_.patch[method].add(norm(tp - want) / diag, where.str());
-            }
-        }
+        double tp[3];
+        if (patch_table && patch_exact && patch_table->evaluate(ptex_face, u, v, tp))
+            fig_.patch[method].add(norm(V3{tp[0], tp[1], tp[2]} - want) / diag, where.str());
         if (dart2_face[f] || bfr35.avoid[f]) return;  // never given to 3.5's Bfr
         if ((int2_face[f] || bfr35.near_val2[f] ? uncached : cached).InitVertexSurface(f, &surface)) {
             bfr_points.resize(3 * surface.GetNumPatchPoints());

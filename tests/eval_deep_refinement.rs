@@ -186,3 +186,62 @@ fn every_shape_matches_deep_refinement() {
     assert!(compared > 50_000, "{compared}");
     assert!(failures.is_empty(), "{failures:#?}");
 }
+
+/// A perturbed 6 x 6 grid whose every interior edge is semi-sharp with its own fractional
+/// sharpness: every vertex averages three or four different values under Chaikin's rule, a
+/// sum in `f32` whose last bits depend on where the order round the vertex starts (a
+/// fragment that started elsewhere than Far was 6.4e-10 x diagonal off).
+fn semi_sharp_grid() -> Mesh {
+    let n = 6u32;
+    let id = |i: u32, j: u32| j * (n + 1) + i;
+    let mut parts = profsubd::MeshParts::default();
+    for j in 0..=n {
+        for i in 0..=n {
+            let h = ((i * 7 + j * 11) % 5) as f64 * 0.13;
+            parts
+                .positions
+                .push(DVec3::new(i as f64 + 0.05 * h, j as f64 - 0.03 * h, h));
+        }
+    }
+    for j in 0..n {
+        for i in 0..n {
+            parts.face_sizes.push(4);
+            parts
+                .face_indices
+                .extend([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    let mut k = 0u32;
+    for j in 1..n {
+        for i in 0..n {
+            for [a, b] in [[id(i, j), id(i + 1, j)], [id(j, i), id(j, i + 1)]] {
+                k += 1;
+                parts.creases.push(profsubd::Crease {
+                    vertices: [a, b],
+                    sharpness: 0.3 + ((k * 37) % 29) as f32 * 0.1173,
+                });
+            }
+        }
+    }
+    Mesh::from_parts(parts).unwrap()
+}
+
+#[test]
+fn fractional_sharpness_everywhere_matches_deep_refinement() {
+    let mesh = semi_sharp_grid();
+    for crease_method in [CreaseMethod::Chaikin, CreaseMethod::Uniform] {
+        let options = SubdivOptions {
+            crease_method,
+            ..SubdivOptions::default()
+        };
+        for level in 1..=6 {
+            let (worst, count) = worst_at_level(&mesh, &options, level, 3000);
+            eprintln!("{crease_method:?} L={level}: {count} points, worst {worst:.2e}");
+            assert!(count > 0);
+            assert!(
+                worst <= 1e-12,
+                "{crease_method:?} level {level}: {worst:.2e} x diagonal"
+            );
+        }
+    }
+}

@@ -22,7 +22,7 @@ use super::sample::LimitSample;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::{BoundaryInterpolation, SubdivOptions};
-use crate::refine::refine_uniform;
+use crate::refine::refine_uniform_ranked;
 
 /// Depth to which irregular faces are refined and cached at construction.
 pub const CACHE_DEPTH: u32 = 5;
@@ -186,7 +186,8 @@ impl Evaluator {
         index: u32,
     ) -> Result<Node> {
         while levels.len() <= depth as usize {
-            let refined = refine_uniform(root, &self.options, levels.len() as u32)?;
+            let ranks = levels[0].face_ranks();
+            let refined = refine_uniform_ranked(root, &self.options, levels.len() as u32, ranks)?;
             let parent = &levels[levels.len() - 1];
             levels.push(Neighbourhood::refined_from(parent, refined));
         }
@@ -331,7 +332,7 @@ fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourh
     let mesh = nb.to_mesh(options);
     Ok(Neighbourhood::refined_from(
         nb,
-        refine_uniform(&mesh, options, 1)?,
+        refine_uniform_ranked(&mesh, options, 1, nb.face_ranks())?,
     ))
 }
 

@@ -52,6 +52,10 @@ pub struct Neighbourhood {
     /// Chaikin creasing: [`Neighbourhood::around_face`] adds the faces around the far ends of
     /// semi-sharp edges at the face's corners (see the module doc).
     chaikin: bool,
+    /// The order of the faces in the whole mesh refined as far as this fragment (Far's face
+    /// order): refinement starts the order round each vertex where Far does (see
+    /// [`crate::topology::Level::from_mesh_ranked`]).
+    face_ranks: Vec<u32>,
 }
 
 impl Neighbourhood {
@@ -87,6 +91,7 @@ impl Neighbourhood {
         }
         let nv = mesh.num_vertices();
         let face_offsets = mesh.face_offsets().to_vec();
+        let face_ranks = (0..mesh.num_faces() as u32).collect();
         let parts = mesh.into_parts();
         Neighbourhood::assemble(
             parts.positions,
@@ -96,6 +101,7 @@ impl Neighbourhood {
             vertex_tags,
             vec![false; nv],
             chaikin,
+            face_ranks,
         )
     }
 
@@ -107,7 +113,29 @@ impl Neighbourhood {
         let nv = parent.positions.len();
         nb.edge_descendants[..nv].copy_from_slice(&parent.edge_descendants);
         nb.edge_descendants[nv + parent.num_faces()..].fill(true);
+        // Far numbers the children of the faces in face order: those of a face come after
+        // the children of every face ranked before it.
+        let mut by_rank: Vec<u32> = (0..parent.num_faces() as u32).collect();
+        by_rank.sort_unstable_by_key(|&f| parent.face_ranks[f as usize]);
+        let mut first_child = vec![0u32; parent.num_faces()];
+        let mut next = 0u32;
+        for &f in &by_rank {
+            first_child[f as usize] = next;
+            next += parent.face(f).len() as u32;
+        }
+        let mut c = 0;
+        for f in 0..parent.num_faces() as u32 {
+            for j in 0..parent.face(f).len() as u32 {
+                nb.face_ranks[c] = first_child[f as usize] + j;
+                c += 1;
+            }
+        }
         nb
+    }
+
+    /// The ranks of the faces (see the field), for refinement.
+    pub fn face_ranks(&self) -> &[u32] {
+        &self.face_ranks
     }
 
     fn assemble(
@@ -118,6 +146,7 @@ impl Neighbourhood {
         vertex_tags: Vec<f32>,
         edge_descendants: Vec<bool>,
         chaikin: bool,
+        face_ranks: Vec<u32>,
     ) -> Neighbourhood {
         let nv = positions.len();
         let mut vf_offsets = vec![0u32; nv + 1];
@@ -148,6 +177,7 @@ impl Neighbourhood {
             vertex_tags,
             edge_descendants,
             chaikin,
+            face_ranks,
         }
     }
 
@@ -298,6 +328,7 @@ impl Neighbourhood {
             vertex_tags,
             edge_descendants,
             self.chaikin,
+            faces.iter().map(|&g| self.face_ranks[g as usize]).collect(),
         )
     }
 

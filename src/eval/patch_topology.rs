@@ -93,16 +93,18 @@ impl Neighbourhood {
         let face_offsets = mesh.face_offsets().to_vec();
         let face_ranks = (0..mesh.num_faces() as u32).collect();
         let parts = mesh.into_parts();
-        Neighbourhood::assemble(
-            parts.positions,
-            face_offsets,
-            parts.face_indices,
-            edge_tags,
-            vertex_tags,
-            vec![false; nv],
+        Neighbourhood {
             chaikin,
             face_ranks,
-        )
+            ..Neighbourhood::assemble(
+                parts.positions,
+                face_offsets,
+                parts.face_indices,
+                edge_tags,
+                vertex_tags,
+                vec![false; nv],
+            )
+        }
     }
 
     /// `child`, the one-level refinement of `parent` (as a mesh, vertices in Far's default
@@ -145,8 +147,6 @@ impl Neighbourhood {
         edge_tags: Vec<((u32, u32), f32)>,
         vertex_tags: Vec<f32>,
         edge_descendants: Vec<bool>,
-        chaikin: bool,
-        face_ranks: Vec<u32>,
     ) -> Neighbourhood {
         let nv = positions.len();
         let mut vf_offsets = vec![0u32; nv + 1];
@@ -176,8 +176,8 @@ impl Neighbourhood {
             edge_tags,
             vertex_tags,
             edge_descendants,
-            chaikin,
-            face_ranks,
+            chaikin: false,
+            face_ranks: Vec::new(),
         }
     }
 
@@ -320,16 +320,18 @@ impl Neighbourhood {
             edge_tags.sort_unstable_by_key(|&(key, _)| key);
             edge_tags.dedup_by_key(|&mut (key, _)| key);
         }
-        Neighbourhood::assemble(
-            positions,
-            face_offsets,
-            face_indices,
-            edge_tags,
-            vertex_tags,
-            edge_descendants,
-            self.chaikin,
-            faces.iter().map(|&g| self.face_ranks[g as usize]).collect(),
-        )
+        Neighbourhood {
+            chaikin: self.chaikin,
+            face_ranks: faces.iter().map(|&g| self.face_ranks[g as usize]).collect(),
+            ..Neighbourhood::assemble(
+                positions,
+                face_offsets,
+                face_indices,
+                edge_tags,
+                vertex_tags,
+                edge_descendants,
+            )
+        }
     }
 
     /// Append the faces around `v` that `faces` does not hold yet.

@@ -45,6 +45,7 @@
 #include "osd_shape.h"
 #include "random_mesh.h"
 #include "test_support.h"
+#include "vec3.h"
 
 #include <profsubd.h>
 
@@ -61,6 +62,7 @@
 using namespace OpenSubdiv;
 using profsubd_test::Checker;
 using profsubd_test::OsdShape;
+using profsubd_test::V3;
 
 namespace {
 
@@ -69,13 +71,6 @@ constexpr int kFacesPerLevel = 40;
 constexpr long kMaxRefinedFaces = 250000;
 constexpr double kTolerance = 1e-12;
 
-struct V3 {
-    double x = 0, y = 0, z = 0;
-};
-V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-V3 operator*(double s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double norm(V3 a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
 
 // Where a refined face lies: Ptex face and the square [u0, u0 + size] x [v0, v0 + size].
 struct Region {
@@ -306,15 +301,8 @@ void DeepRun::run(const std::string &label, const OsdShape &shape, const Sdc::Op
     for (int l = 1; l <= levels; ++l) offsets_[l] = offsets_[l - 1] + refiner->GetLevel(l - 1).GetNumVertices();
 
     std::string err;
-    profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
-    if (!c_.check(mesh != nullptr, config + ": profsubd_mesh_new: " + err)) return;
-    auto o = profsubd_test::capi_options(opts);
-    profsubd_evaluator *raw = nullptr;
-    profsubd_status st = profsubd_evaluator_new(mesh.get(), o.get(), &raw);
-    if (!c_.check(st == PROFSUBD_OK, config + ": profsubd_evaluator_new: " + profsubd_test::describe_status(st)))
-        return;
-    std::unique_ptr<profsubd_evaluator, void (*)(profsubd_evaluator *)> ev(
-        raw, [](profsubd_evaluator *e) { profsubd_evaluator_free(e); });
+    profsubd_test::EvaluatorPtr ev = profsubd_test::new_evaluator_capi(shape, opts, &err);
+    if (!c_.check(ev != nullptr, config + ": " + err)) return;
 
     // OpenSubdiv's evaluators, measured.
     std::unique_ptr<Far::TopologyRefiner> base_refiner = profsubd_test::build_refiner(shape, opts);

@@ -40,6 +40,7 @@
 #include "random_mesh.h"
 #include "random_points.h"
 #include "test_support.h"
+#include "vec3.h"
 
 #include <profsubd.h>
 
@@ -57,16 +58,10 @@
 using namespace OpenSubdiv;
 using profsubd_test::Checker;
 using profsubd_test::OsdShape;
+using profsubd_test::V3;
 
 namespace {
 
-struct V3 {
-    double x = 0, y = 0, z = 0;
-};
-V3 operator-(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 operator+(V3 a, V3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-V3 operator*(double s, V3 a) { return {s * a.x, s * a.y, s * a.z}; }
-double norm(V3 a) { return std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z); }
 std::string str(V3 a) {
     char b[128];
     std::snprintf(b, sizeof b, "(%.17g %.17g %.17g)", a.x, a.y, a.z);
@@ -153,11 +148,6 @@ const char *name(Config c) {
     return s.c_str();
 }
 
-struct EvaluatorDeleter {
-    void operator()(profsubd_evaluator *e) const { profsubd_evaluator_free(e); }
-};
-using EvaluatorPtr = std::unique_ptr<profsubd_evaluator, EvaluatorDeleter>;
-
 // The level-`level` descendant (Far's child order) whose corner 0 is at (i, j)/2^k of Ptex
 // face `ptex` (k = level for quads, level - 1 for a non-quad's sub-face).
 int descendant(const Far::TopologyLevel &base, int face, int sub, int i, int j, int level) {
@@ -217,14 +207,9 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
     double diag = profsubd_test::bbox_diagonal(shape.positions);
 
     std::string err;
-    profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
-    if (!c_.check(mesh != nullptr, label + ": profsubd_mesh_new: " + err)) return;
-    auto o = profsubd_test::capi_options(opts);
-    profsubd_evaluator *raw = nullptr;
-    profsubd_status st = profsubd_evaluator_new(mesh.get(), o.get(), &raw);
-    if (!c_.check(st == PROFSUBD_OK, label + ": profsubd_evaluator_new: " + profsubd_test::describe_status(st)))
-        return;
-    EvaluatorPtr ev(raw);
+    profsubd_test::EvaluatorPtr ev = profsubd_test::new_evaluator_capi(shape, opts, &err);
+    if (!c_.check(ev != nullptr, label + ": " + err)) return;
+    profsubd_status st = PROFSUBD_OK;
 
     Far::PtexIndices ptex(*refiner);
     size_t nptex = 0;

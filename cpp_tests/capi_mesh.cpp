@@ -134,6 +134,24 @@ MeshPtr load_obj_capi(const std::string &path, std::string *error) {
     return MeshPtr(m);
 }
 
+EvaluatorPtr new_evaluator_capi(const OsdShape &shape, const OpenSubdiv::Sdc::Options &options,
+                                std::string *error) {
+    std::string err;
+    MeshPtr mesh = new_mesh_capi(shape, &err);
+    if (!mesh) {
+        *error = "profsubd_mesh_new: " + err;
+        return EvaluatorPtr();
+    }
+    OptionsPtr o = capi_options(options);
+    profsubd_evaluator *raw = nullptr;
+    profsubd_status st = profsubd_evaluator_new(mesh.get(), o.get(), &raw);
+    if (st != PROFSUBD_OK) {
+        *error = "profsubd_evaluator_new: " + describe_status(st);
+        return EvaluatorPtr();
+    }
+    return EvaluatorPtr(raw);
+}
+
 MeshPtr new_mesh_capi(const OsdShape &s, std::string *error) {
     std::vector<uint32_t> sizes(s.face_sizes.begin(), s.face_sizes.end());
     std::vector<uint32_t> indices(s.face_indices.begin(), s.face_indices.end());

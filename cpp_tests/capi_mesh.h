@@ -58,6 +58,16 @@ MeshPtr load_obj_capi(const std::string &path, std::string *error);
 // profsubd_mesh_new from an OsdShape's arrays; on failure `error` gets the status description.
 MeshPtr new_mesh_capi(const OsdShape &shape, std::string *error);
 
+struct EvaluatorDeleter {
+    void operator()(profsubd_evaluator *e) const { profsubd_evaluator_free(e); }
+};
+using EvaluatorPtr = std::unique_ptr<profsubd_evaluator, EvaluatorDeleter>;
+
+// profsubd_evaluator_new for `shape` (through new_mesh_capi) under `options`; on failure
+// `error` says which call failed and why.
+EvaluatorPtr new_evaluator_capi(const OsdShape &shape, const OpenSubdiv::Sdc::Options &options,
+                                std::string *error);
+
 // The C API's data as an OsdShape with the given options, to build a Far refiner from it.
 OsdShape to_osd_shape(const CapiMesh &mesh, const OpenSubdiv::Sdc::Options &options);
 

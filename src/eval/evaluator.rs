@@ -25,7 +25,7 @@ use super::sample::LimitSample;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
-use crate::refine::refine_uniform;
+use crate::refine::refine_uniform_ranked;
 use crate::topology::Level;
 
 /// Depth to which irregular faces are refined and cached at construction.
@@ -79,7 +79,7 @@ impl Evaluator {
     /// `u32`; errors of the refinement of an irregular neighbourhood.
     pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
         let ptex = PtexFaces::new(mesh)?;
-        let global = Neighbourhood::from_mesh(mesh);
+        let global = Neighbourhood::from_mesh(mesh, options);
         let no_surface = faces_without_surface(mesh, options);
         let mut ev = Evaluator {
             mesh: mesh.clone(),
@@ -190,7 +190,8 @@ impl Evaluator {
         index: u32,
     ) -> Result<Node> {
         while levels.len() <= depth as usize {
-            let refined = refine_uniform(root, &self.options, levels.len() as u32)?;
+            let ranks = levels[0].face_ranks();
+            let refined = refine_uniform_ranked(root, &self.options, levels.len() as u32, ranks)?;
             let parent = &levels[levels.len() - 1];
             levels.push(Neighbourhood::refined_from(parent, refined));
         }
@@ -408,7 +409,7 @@ fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourh
     let mesh = nb.to_mesh(options);
     Ok(Neighbourhood::refined_from(
         nb,
-        refine_uniform(&mesh, options, 1)?,
+        refine_uniform_ranked(&mesh, options, 1, nb.face_ranks())?,
     ))
 }
 

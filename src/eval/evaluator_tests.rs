@@ -175,7 +175,8 @@ fn descendant(mesh: &Mesh, ptex: u32, i: u32, j: u32, level: u32) -> u32 {
 
 /// The limit of a smooth valence-4 vertex: `(16 w + 4 Σ edge ends + Σ diagonals) / 36`.
 fn smooth_limit(refined: &Mesh, w: u32) -> DVec3 {
-    let nb = crate::eval::patch_topology::Neighbourhood::from_mesh(refined);
+    let nb =
+        crate::eval::patch_topology::Neighbourhood::from_mesh(refined, &SubdivOptions::default());
     let faces = nb.vertex_faces(w);
     assert_eq!(faces.len(), 4, "vertex {w} is not regular");
     let mut sum = 16.0 * nb.position(w);

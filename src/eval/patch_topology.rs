@@ -2,19 +2,27 @@
 //!
 //! A [`Neighbourhood`] is a mesh fragment in flat arrays (faces, vertex-to-face incidence,
 //! crease and corner tags) built either from a whole control mesh or as the faces around one
-//! face: every face that shares a vertex with it. That fragment is exactly what one level of
-//! Catmull-Clark refinement needs to produce the face's children *and their own
-//! neighbourhoods* correctly — vertex points need their vertex's faces, edge points the two
-//! faces of their edge, and (Chaikin) child edge sharpness only the edges at the same vertex —
-//! so the evaluator refines small fragments instead of the whole mesh. Vertices and edges at
-//! the rim of a fragment come out wrong after refinement; they are never used.
+//! face `F`: every face that shares a vertex with it, and under Chaikin creasing also every
+//! face around the far end `r` of a semi-sharp edge at a corner of `F`. That fragment is
+//! exactly what one level of Catmull-Clark refinement needs to produce the face's children
+//! *and their own fragments* correctly: vertex points need their vertex's faces, edge points
+//! the faces of their edge and their rule, which follows the sharpness of the edge's two
+//! child halves; under Chaikin the half at `r` averages the semi-sharp edges around `r`, so
+//! all of `r`'s edges must be there (without them an edge point next to `F` takes the dart
+//! rule instead of the crease rule, or the reverse, and the error reaches `F`'s
+//! descendants a few levels down). The child fragments satisfy the same condition: the far
+//! ends of semi-sharp edges at a child's corners are edge points of such edges or vertex
+//! points of `F`'s corners, whose edges' sharpness comes from edges around `F`'s corners and
+//! the `r`s. So the evaluator refines small fragments instead of the whole mesh. Vertices
+//! and edges at the rim of a fragment come out wrong after refinement; they are never used.
 
 use std::collections::HashMap;
 
 use glam::DVec3;
 
+use crate::catmark::crease::is_semi_sharp;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts};
-use crate::options::{PartialOptions, SubdivOptions};
+use crate::options::{CreaseMethod, PartialOptions, SubdivOptions};
 
 /// Largest fragment whose vertices [`Neighbourhood::around_face`] renumbers through a table
 /// as long as the fragment; from a larger one (a whole control mesh, a deeply refined
@@ -41,16 +49,24 @@ pub struct Neighbourhood {
     /// a fragment read as a base mesh would (the child of an edge with two faces of opposite
     /// orientation is a non-manifold vertex with as many faces as edges).
     edge_descendants: Vec<bool>,
+    /// Chaikin creasing: [`Neighbourhood::around_face`] adds the faces around the far ends of
+    /// semi-sharp edges at the face's corners (see the module doc).
+    chaikin: bool,
+    /// The order of the faces in the whole mesh refined as far as this fragment (Far's face
+    /// order): refinement starts the order round each vertex where Far does (see
+    /// [`crate::topology::Level::from_mesh_ranked`]).
+    face_ranks: Vec<u32>,
 }
 
 impl Neighbourhood {
-    /// The whole of `mesh`.
-    pub fn from_mesh(mesh: &Mesh) -> Neighbourhood {
-        Neighbourhood::from_owned_mesh(mesh.clone())
+    /// The whole of `mesh`, to be cut into fragments for refinement under `options`.
+    pub fn from_mesh(mesh: &Mesh, options: &SubdivOptions) -> Neighbourhood {
+        let chaikin = options.crease_method == CreaseMethod::Chaikin;
+        Neighbourhood::from_owned_mesh(mesh.clone(), chaikin)
     }
 
     /// [`Neighbourhood::from_mesh`] taking the mesh's arrays instead of copying them.
-    fn from_owned_mesh(mesh: Mesh) -> Neighbourhood {
+    fn from_owned_mesh(mesh: Mesh, chaikin: bool) -> Neighbourhood {
         let mut edge_tags: Vec<((u32, u32), f32)> = mesh
             .creases()
             .iter()
@@ -75,26 +91,53 @@ impl Neighbourhood {
         }
         let nv = mesh.num_vertices();
         let face_offsets = mesh.face_offsets().to_vec();
+        let face_ranks = (0..mesh.num_faces() as u32).collect();
         let parts = mesh.into_parts();
-        Neighbourhood::assemble(
-            parts.positions,
-            face_offsets,
-            parts.face_indices,
-            edge_tags,
-            vertex_tags,
-            vec![false; nv],
-        )
+        Neighbourhood {
+            chaikin,
+            face_ranks,
+            ..Neighbourhood::assemble(
+                parts.positions,
+                face_offsets,
+                parts.face_indices,
+                edge_tags,
+                vertex_tags,
+                vec![false; nv],
+            )
+        }
     }
 
     /// `child`, the one-level refinement of `parent` (as a mesh, vertices in Far's default
     /// order: children of vertices, of faces, then of edges), keeping track of which
     /// vertices descend from edge points.
     pub fn refined_from(parent: &Neighbourhood, child: Mesh) -> Neighbourhood {
-        let mut nb = Neighbourhood::from_owned_mesh(child);
+        let mut nb = Neighbourhood::from_owned_mesh(child, parent.chaikin);
         let nv = parent.positions.len();
         nb.edge_descendants[..nv].copy_from_slice(&parent.edge_descendants);
         nb.edge_descendants[nv + parent.num_faces()..].fill(true);
+        // Far numbers the children of the faces in face order: those of a face come after
+        // the children of every face ranked before it.
+        let mut by_rank: Vec<u32> = (0..parent.num_faces() as u32).collect();
+        by_rank.sort_unstable_by_key(|&f| parent.face_ranks[f as usize]);
+        let mut first_child = vec![0u32; parent.num_faces()];
+        let mut next = 0u32;
+        for &f in &by_rank {
+            first_child[f as usize] = next;
+            next += parent.face(f).len() as u32;
+        }
+        let mut c = 0;
+        for f in 0..parent.num_faces() as u32 {
+            for j in 0..parent.face(f).len() as u32 {
+                nb.face_ranks[c] = first_child[f as usize] + j;
+                c += 1;
+            }
+        }
         nb
+    }
+
+    /// The ranks of the faces (see the field), for refinement.
+    pub fn face_ranks(&self) -> &[u32] {
+        &self.face_ranks
     }
 
     fn assemble(
@@ -133,6 +176,8 @@ impl Neighbourhood {
             edge_tags,
             vertex_tags,
             edge_descendants,
+            chaikin: false,
+            face_ranks: Vec::new(),
         }
     }
 
@@ -194,14 +239,30 @@ impl Neighbourhood {
         })
     }
 
-    /// The faces sharing a vertex with face `f`, as a new fragment whose face 0 is `f` and
-    /// whose vertices 0..n are `f`'s vertices in order.
+    /// The faces sharing a vertex with face `f` (under Chaikin creasing also those around the
+    /// far ends of semi-sharp edges at `f`'s corners), as a new fragment whose face 0 is `f`
+    /// and whose vertices 0..n are `f`'s vertices in order.
     pub fn around_face(&self, f: u32) -> Neighbourhood {
         let mut faces: Vec<u32> = vec![f];
-        for &v in self.face(f) {
-            for &g in self.vertex_faces(v) {
-                if !faces.contains(&g) {
-                    faces.push(g);
+        let corners = self.face(f);
+        for &v in corners {
+            self.add_faces_around(v, &mut faces);
+        }
+        if self.chaikin && !self.edge_tags.is_empty() {
+            for &c in corners {
+                for &g in self.vertex_faces(c) {
+                    let face = self.face(g);
+                    let n = face.len();
+                    for (i, &x) in face.iter().enumerate() {
+                        if x != c {
+                            continue;
+                        }
+                        for r in [face[(i + 1) % n], face[(i + n - 1) % n]] {
+                            if !corners.contains(&r) && is_semi_sharp(self.edge_tag(c, r)) {
+                                self.add_faces_around(r, &mut faces);
+                            }
+                        }
+                    }
                 }
             }
         }
@@ -259,14 +320,27 @@ impl Neighbourhood {
             edge_tags.sort_unstable_by_key(|&(key, _)| key);
             edge_tags.dedup_by_key(|&mut (key, _)| key);
         }
-        Neighbourhood::assemble(
-            positions,
-            face_offsets,
-            face_indices,
-            edge_tags,
-            vertex_tags,
-            edge_descendants,
-        )
+        Neighbourhood {
+            chaikin: self.chaikin,
+            face_ranks: faces.iter().map(|&g| self.face_ranks[g as usize]).collect(),
+            ..Neighbourhood::assemble(
+                positions,
+                face_offsets,
+                face_indices,
+                edge_tags,
+                vertex_tags,
+                edge_descendants,
+            )
+        }
+    }
+
+    /// Append the faces around `v` that `faces` does not hold yet.
+    fn add_faces_around(&self, v: u32, faces: &mut Vec<u32>) {
+        for &g in self.vertex_faces(v) {
+            if !faces.contains(&g) {
+                faces.push(g);
+            }
+        }
     }
 
     /// This fragment as a [`Mesh`] with `options` attached, to be refined. Not validated

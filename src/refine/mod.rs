@@ -52,7 +52,37 @@ pub fn refine_uniform_ordered(
     order: VertexOrder,
 ) -> Result<Mesh> {
     check_level(mesh, level)?;
-    let base = Level::from_mesh_with_options(mesh, options);
+    refine_base(
+        mesh,
+        Level::from_mesh_with_options(mesh, options),
+        options,
+        level,
+        order,
+    )
+}
+
+/// [`refine_uniform`] of a fragment of a larger mesh whose faces that mesh orders as `ranks`
+/// does (see [`Level::from_mesh_ranked`]): the refined fragment agrees bit for bit with the
+/// refinement of the whole mesh wherever the fragment holds what that needs.
+pub(crate) fn refine_uniform_ranked(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    level: u32,
+    ranks: &[u32],
+) -> Result<Mesh> {
+    check_level(mesh, level)?;
+    let base = Level::from_mesh_ranked(mesh, options, Some(ranks));
+    refine_base(mesh, base, options, level, VertexOrder::VerticesFirst)
+}
+
+/// Refine `base`, the base level of `mesh`, `level` times.
+fn refine_base(
+    mesh: &Mesh,
+    base: Level,
+    options: &SubdivOptions,
+    level: u32,
+    order: VertexOrder,
+) -> Result<Mesh> {
     if level == 0 {
         let sharpened = |v: usize| base.vertex_topology(v).is_sharpened(options.boundary);
         let corners = output::corners_of(&base, sharpened);

@@ -19,7 +19,16 @@ impl Level {
 
     /// The base level of `mesh` under `options` (which decide the boundary sharpening).
     pub fn from_mesh_with_options(mesh: &Mesh, options: &SubdivOptions) -> Level {
-        let mut level = topology_from_face_vertices(mesh, *options);
+        Level::from_mesh_ranked(mesh, options, None)
+    }
+
+    /// [`Level::from_mesh_with_options`] for a fragment of a larger mesh: `ranks[f]` orders
+    /// the fragment's faces as that mesh orders them, so that the counter-clockwise order
+    /// round an interior vertex starts at the same face as there (Far starts at the vertex's
+    /// first face in face order). Chaikin creasing sums the sharpness around a vertex in that
+    /// order, in `f32`, so the start shows in the last bits.
+    pub fn from_mesh_ranked(mesh: &Mesh, options: &SubdivOptions, ranks: Option<&[u32]>) -> Level {
+        let mut level = topology_from_face_vertices(mesh, *options, ranks);
         level.assign_tags_and_sharpness(mesh);
         level
     }
@@ -30,6 +39,7 @@ impl Level {
     fn ordered_faces_and_edges(
         &self,
         v: usize,
+        ranks: Option<&[u32]>,
         faces: &mut Vec<u32>,
         edges: &mut Vec<u32>,
     ) -> Option<()> {
@@ -42,7 +52,10 @@ impl Level {
         let pos = |s: &[u32], x: u32| s.iter().position(|&y| y == x);
         let (mut f_start, mut e_start, mut fv_start);
         if ec == fc {
-            f_start = v_faces[0];
+            f_start = match ranks {
+                Some(r) => *v_faces.iter().min_by_key(|&&f| r[f as usize])?,
+                None => v_faces[0],
+            };
             fv_start = pos(self.face_vertices(f_start as usize), v as u32)?;
             e_start = self.face_edges(f_start as usize)[fv_start];
         } else {
@@ -204,7 +217,11 @@ fn offsets_of(lengths: impl IntoIterator<Item = u32>) -> Vec<u32> {
 /// two edges per incident face-vertex (the most a face-vertex can create) and are compacted
 /// at the end; edge-face rows are filled once all edges are known, in the order the faces
 /// met the edge.
-fn topology_from_face_vertices(mesh: &Mesh, options: SubdivOptions) -> Level {
+fn topology_from_face_vertices(
+    mesh: &Mesh,
+    options: SubdivOptions,
+    ranks: Option<&[u32]>,
+) -> Level {
     let nv = mesh.num_vertices();
     let nf = mesh.num_faces();
     let face_offsets = mesh.face_offsets().to_vec();
@@ -332,7 +349,7 @@ fn topology_from_face_vertices(mesh: &Mesh, options: SubdivOptions) -> Level {
         if level.vert_non_manifold[v] {
             continue;
         }
-        match level.ordered_faces_and_edges(v, &mut faces, &mut edges) {
+        match level.ordered_faces_and_edges(v, ranks, &mut faces, &mut edges) {
             Some(()) => {
                 let fr =
                     level.vert_face_offsets[v] as usize..level.vert_face_offsets[v + 1] as usize;

@@ -1,7 +1,7 @@
-// Bad input to every C entry point of the mesh and options API: the status must be the
-// documented one, the message (profsubd_last_error_message) must say what is wrong, and a
-// failed call must leave every output untouched. Also: status strings, version, handles
-// of the wrong kind, thread-local messages and concurrent use of one handle.
+// Bad input to every C entry point of the mesh and options API and of the fold check: the
+// status must be the documented one, the message (profsubd_last_error_message) must say what
+// is wrong, and a failed call must leave every output untouched. Also: status strings,
+// version, handles of the wrong kind, thread-local messages and concurrent use of one handle.
 #include "capi_mesh.h"
 #include "test_support.h"
 
@@ -517,6 +517,59 @@ void check_threads(Checker &ck, const TempDir &tmp) {
     ck.check(ok[0] + ok[1] + ok[2] + ok[3] == 800, "4 threads reading one mesh all succeed");
 }
 
+// The fold check: NULL and foreign handles, settings out of range, outputs untouched on
+// error, the copy-out protocol for the folded faces.
+void check_folds(Checker &ck) {
+    ck.set_context("check_folds");
+    SquareDesc s;
+    profsubd_mesh *raw = nullptr;
+    profsubd_mesh_new(&s.d, &raw);
+    MeshPtr m(raw);
+    profsubd_evaluator *ev = nullptr;
+    ck.equal(int(profsubd_evaluator_new(m.get(), nullptr, &ev)), int(PROFSUBD_OK), "evaluator_new");
+    profsubd_fold_report *const sentinel = reinterpret_cast<profsubd_fold_report *>(uintptr_t(0x5eed));
+    profsubd_fold_report *out = sentinel;
+    expect(ck, profsubd_check_folds(nullptr, nullptr, &out), PROFSUBD_ERROR_NULL_ARGUMENT, {"evaluator"},
+           "check_folds NULL evaluator");
+    expect(ck, profsubd_check_folds(ev, nullptr, nullptr), PROFSUBD_ERROR_NULL_ARGUMENT, {"out"},
+           "check_folds NULL out");
+    expect(ck, profsubd_check_folds(reinterpret_cast<profsubd_evaluator *>(m.get()), nullptr, &out),
+           PROFSUBD_ERROR_INVALID_HANDLE, {"profsubd_evaluator"}, "mesh passed as an evaluator");
+    profsubd_fold_settings bad[3] = {{1, 4, 45.0}, {9, 17, 45.0}, {9, 4, std::nan("")}};
+    const char *words[3] = {"samples per edge", "adaptive depth", "turn"};
+    for (int i = 0; i < 3; ++i)
+        expect(ck, profsubd_check_folds(ev, &bad[i], &out), PROFSUBD_ERROR_INVALID_ARGUMENT, {words[i]},
+               std::string("check_folds with bad settings: ") + words[i]);
+    ck.check(out == sentinel, "out untouched on error");
+
+    // A flat square does not fold: one face checked, no folded face, worst angle 0.
+    ck.equal(int(profsubd_check_folds(ev, nullptr, &out)), int(PROFSUBD_OK), "check_folds");
+    profsubd_fold_summary sum;
+    std::memset(&sum, 0xab, sizeof sum);
+    profsubd_fold_summary before = sum;
+    expect(ck, profsubd_fold_report_get_summary(nullptr, &sum), PROFSUBD_ERROR_NULL_ARGUMENT, {"report"},
+           "get_summary NULL report");
+    expect(ck, profsubd_fold_report_get_summary(out, nullptr), PROFSUBD_ERROR_NULL_ARGUMENT, {"out"},
+           "get_summary NULL out");
+    expect(ck, profsubd_fold_report_get_summary(reinterpret_cast<profsubd_fold_report *>(ev), &sum),
+           PROFSUBD_ERROR_INVALID_HANDLE, {"profsubd_fold_report"}, "evaluator passed as a fold report");
+    ck.check(std::memcmp(&sum, &before, sizeof sum) == 0, "summary untouched on error");
+    ck.equal(int(profsubd_fold_report_get_summary(out, &sum)), int(PROFSUBD_OK), "get_summary");
+    ck.check(sum.num_folded_faces == 0 && sum.faces_checked == 1 && sum.samples > 0 &&
+                 sum.worst_reversal_deg < 1e-5 && sum.worst_face == 0 && sum.min_relative_jacobian > 0,
+             "flat square: no fold");
+    size_t needed = 99;
+    uint32_t faces[1] = {7};
+    expect(ck, profsubd_fold_report_get_folded_faces(out, nullptr, 1, &needed), PROFSUBD_ERROR_NULL_ARGUMENT,
+           {"out"}, "get_folded_faces NULL buffer with capacity 1");
+    ck.equal(int(profsubd_fold_report_get_folded_faces(out, faces, 1, &needed)), int(PROFSUBD_OK),
+             "get_folded_faces");
+    ck.check(needed == 0 && faces[0] == 7, "no folded face, buffer untouched");
+    profsubd_fold_report_free(out);
+    profsubd_fold_report_free(nullptr);
+    profsubd_evaluator_free(ev);
+}
+
 }  // namespace
 
 int main() {
@@ -528,6 +581,7 @@ int main() {
     check_handles(ck);
     check_options(ck);
     check_refine(ck);
+    check_folds(ck);
     check_strings_and_version(ck);
     check_threads(ck, tmp);
     return ck.finish();

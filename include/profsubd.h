@@ -231,6 +231,12 @@ typedef enum profsubd_vertex_order {
 typedef struct profsubd_evaluator profsubd_evaluator;
 
 /**
+ * The result of `profsubd_check_folds` (opaque, immutable, safe to share between threads).
+ * Release with `profsubd_fold_report_free`.
+ */
+typedef struct profsubd_fold_report profsubd_fold_report;
+
+/**
  * A validated control mesh (opaque, immutable, safe to share between threads). Create with
  * `profsubd_mesh_new` or `profsubd_mesh_read_obj`; release with `profsubd_mesh_free`.
  */
@@ -262,6 +268,66 @@ typedef struct profsubd_stencil_table profsubd_stencil_table;
  * `profsubd_swept_free`.
  */
 typedef struct profsubd_swept profsubd_swept;
+
+/**
+ * How densely `profsubd_check_folds` samples (NULL for the defaults 9, 4, 45).
+ */
+typedef struct profsubd_fold_settings {
+    /**
+     * Samples along each edge of a parametric face's base lattice, 2..=1025 (default 9).
+     */
+    size_t samples_per_edge;
+    /**
+     * How many times a lattice cell may be halved, next to extraordinary or non-smooth
+     * corners and where the normal turns fast, 0..=16 (default 4).
+     */
+    size_t adaptive_depth;
+    /**
+     * A cell whose corner normals turn by more than this many degrees is refined, in
+     * (0, 180] (default 45).
+     */
+    double refine_turn_deg;
+} profsubd_fold_settings;
+
+/**
+ * The summary of a fold report.
+ */
+typedef struct profsubd_fold_summary {
+    /**
+     * Folded control faces (0: the surface is fold-free).
+     */
+    size_t num_folded_faces;
+    /**
+     * Parametric faces checked (faces without limit surface are skipped).
+     */
+    size_t faces_checked;
+    /**
+     * Limit evaluations made.
+     */
+    size_t samples;
+    /**
+     * Largest angle (degrees) between a sample's normal and its parametric face's mean
+     * normal; above 90 the surface is reversed there.
+     */
+    double worst_reversal_deg;
+    /**
+     * Parametric face of that sample, -1 when no sample has a normal.
+     */
+    int64_t worst_face;
+    /**
+     * `u` of that sample (0 when `worst_face` is -1).
+     */
+    double worst_u;
+    /**
+     * `v` of that sample (0 when `worst_face` is -1).
+     */
+    double worst_v;
+    /**
+     * Minimum over samples of `(du x dv) . n_mean / typical |du x dv|` of the face;
+     * negative where the surface is reversed; +infinity when no sample counts.
+     */
+    double min_relative_jacobian;
+} profsubd_fold_summary;
 
 /**
  * Caller arrays describing a mesh, as OpenSubdiv's `Far::TopologyDescriptor`. All counts
@@ -552,6 +618,38 @@ enum profsubd_status profsubd_evaluator_limit_vertices(const struct profsubd_eva
                                                        double *dv,
                                                        size_t capacity,
                                                        size_t *needed);
+
+/**
+ * Sample the limit surface of `evaluator` and report where it folds: a sample whose normal
+ * is more than 90 degrees from its parametric face's mean normal, or a normal that jumps by
+ * more than 90 degrees across a cell of the finest sampling lattice; creases and corners,
+ * where the normal jumps between faces, are not folds (see the README, "Surface validity").
+ * `settings` may be NULL (defaults). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for settings
+ * out of range.
+ */
+enum profsubd_status profsubd_check_folds(const struct profsubd_evaluator *evaluator,
+                                          const struct profsubd_fold_settings *settings,
+                                          struct profsubd_fold_report **out);
+
+/**
+ * Release a fold report (NULL is a no-op).
+ */
+void profsubd_fold_report_free(struct profsubd_fold_report *report);
+
+/**
+ * The report's counts, worst reversal and where, and minimum relative Jacobian.
+ */
+enum profsubd_status profsubd_fold_report_get_summary(const struct profsubd_fold_report *report,
+                                                      struct profsubd_fold_summary *out);
+
+/**
+ * Copy the folded control faces' indices (ascending) into `out`. `capacity` and
+ * `*needed` count faces (copy-out protocol).
+ */
+enum profsubd_status profsubd_fold_report_get_folded_faces(const struct profsubd_fold_report *report,
+                                                           uint32_t *out,
+                                                           size_t capacity,
+                                                           size_t *needed);
 
 /**
  * Build the limit stencils of every control vertex of `mesh` under `options` (NULL: the

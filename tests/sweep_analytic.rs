@@ -8,8 +8,12 @@
 //! The input curves are sampled densely (64+ points) so that their spline interpolation
 //! error stays far below the surface error being measured.
 
+#[path = "support/arc.rs"]
+mod arc;
+
 use std::f64::consts::{PI, TAU};
 
+use arc::arc;
 use glam::DVec3;
 use profsubd::construct::sweep::revolve::RevolveInput;
 use profsubd::construct::sweep::sweep::SweepInput;
@@ -64,15 +68,6 @@ fn check_convergence(
         rates.iter().all(|&r| r >= min_rate),
         "{name}: rates {rates:?}"
     );
-}
-
-fn arc(n: usize, r: f64, from: f64, to: f64) -> Vec<[f64; 2]> {
-    (0..=n)
-        .map(|i| {
-            let t = from + (to - from) * i as f64 / n as f64;
-            [r * t.cos(), r * t.sin()]
-        })
-        .collect()
 }
 
 #[test]

@@ -6,8 +6,9 @@ use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{read_mesh, SubdivFlags};
+use super::{check_surface, read_mesh, SubdivFlags};
 use crate::error::Result;
+use crate::eval::folds::FoldSettings;
 use crate::mesh::{Mesh, MeshReport, SHARPNESS_INFINITE};
 use crate::options::{BoundaryInterpolation, CreaseMethod, TriangleSubdivision};
 
@@ -26,20 +27,61 @@ pub struct CheckArgs {
     /// Options to report as in effect (they override the file's tags).
     #[command(flatten)]
     pub options: SubdivFlags,
+    // --- surface (folds) ---
+    /// Also sample the limit surface and report its folds (exit code 3 if it folds).
+    #[arg(long)]
+    pub surface: bool,
+    /// With --surface: samples along each edge of a parametric face's lattice (before
+    /// adaptive refinement).
+    #[arg(long, value_name = "N", default_value_t = 9, requires = "surface")]
+    pub samples: usize,
+    /// With --surface: how many times a lattice cell may be halved (near extraordinary or
+    /// non-smooth corners, and where the normal turns fast).
+    #[arg(long, value_name = "D", default_value_t = 4, requires = "surface")]
+    pub adaptive_depth: usize,
+    // --- end surface ---
 }
 
 /// Run `check`: print the report; exit code 0 for a manifold mesh, 2 for a mesh that loads
-/// but is not a manifold (an unreadable or invalid file is an error, exit code 1).
+/// but is not a manifold (an unreadable or invalid file is an error, exit code 1); with
+/// `--surface`, [`check_surface::EXIT_FOLDED`] (3) when the limit surface folds, whether
+/// or not the mesh is a manifold.
 pub fn run(args: &CheckArgs) -> Result<i32> {
     let mesh = read_mesh(&args.mesh)?;
     let report = mesh.check();
+    // --- surface (folds) ---
+    let surface = if args.surface {
+        let settings = FoldSettings {
+            samples_per_edge: args.samples,
+            adaptive_depth: args.adaptive_depth,
+            ..Default::default()
+        };
+        let options = args.options.partial().over(mesh.options()).resolve();
+        Some((check_surface::check(&mesh, &options, &settings)?, settings))
+    } else {
+        None
+    };
+    // --- end surface ---
     if args.json {
-        println!("{}", json_report(&args.mesh, &mesh, &report, &args.options));
+        let mut value = json_report(&args.mesh, &mesh, &report, &args.options);
+        if let (Some(obj), Some((folds, settings))) = (value.as_object_mut(), &surface) {
+            obj.insert(
+                "surface".to_string(),
+                check_surface::json_folds(folds, settings),
+            );
+        }
+        println!("{value}");
     } else {
         print!(
             "{}",
             format_report(&args.mesh, &mesh, &report, &args.options)
         );
+        if let Some((folds, settings)) = &surface {
+            print!("{}", check_surface::format_folds(folds, settings));
+        }
+    }
+    if surface.is_some_and(|(folds, _)| !folds.is_fold_free()) {
+        return Ok(check_surface::EXIT_FOLDED);
     }
     Ok(if report.is_manifold() { 0 } else { 2 })
 }

@@ -6,9 +6,11 @@
 //! Flags shared by subcommands that take subdivision options are in [`SubdivFlags`].
 //!
 //! Exit codes: 0 success; 1 error (unreadable or invalid input, bad arguments), with the
-//! reason on stderr; subcommands may define more (`check`: 2 for a non-manifold mesh).
+//! reason on stderr; subcommands may define more (`check`: 2 for a non-manifold mesh, 3 with
+//! `--surface` for a limit surface that folds).
 
 pub mod check;
+pub mod check_surface;
 pub mod convert;
 pub mod limit;
 pub mod profile;
@@ -36,7 +38,8 @@ use crate::options::{BoundaryInterpolation, CreaseMethod, PartialOptions, Triang
     t creasemethod, t smoothtriangles; indices 0-based as in OpenSubdiv's shapes)."
 )]
 #[command(after_help = "Exit codes: 0 success, 1 error (reason on stderr), \
-    2 from `check` for a mesh that loads but is not a manifold.")]
+    2 from `check` for a mesh that loads but is not a manifold, \
+    3 from `check --surface` for a limit surface that folds.")]
 pub struct Cli {
     /// The subcommand to run.
     #[command(subcommand)]
@@ -55,6 +58,9 @@ pub enum Command {
     /// the subdivision options in effect with where each comes from. Exit code 0 for a
     /// manifold mesh, 2 for a mesh that loads but is not a manifold (OpenSubdiv accepts
     /// it), 1 for a file that cannot be read or is not a valid mesh (reason on stderr).
+    /// With --surface, also samples the limit surface of every face and reports where it
+    /// folds (its normal turns through zero and comes back reversed); exit code 3 when it
+    /// does.
     Check(check::CheckArgs),
     /// Rewrite an OBJ mesh: exact coordinates, normalized tags, options overridden.
     ///

@@ -14,28 +14,43 @@
 //! since `du × dv` of the limit parameterization vanishes or diverges there). At a corner
 //! that is not a smooth interior point (boundary, sharp edge or vertex, non-manifold), each
 //! face has its own one-sided normal while the vertex limit reports one face's, so the
-//! sample is taken [`CORNER_INSET`] inside the face instead.
+//! sample is taken [`CORNER_INSET`] inside the face instead; so too at interior valence-2
+//! vertices, where the vertex limit's tangents are OpenSubdiv's approximate masks.
 //!
-//! The criterion. The *reference normal* of a Ptex face is its area-weighted mean normal,
-//! `∫ du × dv du dv` by the trapezoid rule on the base lattice (samples whose derivative
-//! lengths are a convention, at irregular corners, left out; the centre sample's normal if
-//! that integral vanishes). A face **folds** when
-//! - a sample's unit normal makes more than 90° with the reference normal (it is reversed), or
+//! The criterion. The *reference normal* of a Ptex face is its mean unit normal (trapezoid
+//! rule on the base lattice, in the face's parameter; samples at irregular corners and in
+//! bend zones left out; the centre sample's normal if that mean vanishes). A face **folds**
+//! when
+//! - a sample's unit normal makes more than 90° with the reference normal (the surface is
+//!   reversed there: it has turned back over itself), or
 //! - two corner samples of a cell of the finest lattice (after all refinement) are more than
-//!   90° apart: the normal jumps there however fine the sampling, as it does where `du × dv`
-//!   passes through zero (a smooth normal field turns less the finer the cell; a fold line
-//!   keeps a jump of nearly 180°).
+//!   90° apart: the normal jumps there however fine the sampling, as it does where a planar
+//!   piece folds in its plane and `du × dv` passes through zero.
 //!
-//! Two samples far apart in one face may legitimately be more than 90° apart (on a coarse
-//! cube's limit surface opposite corners of a face are 109° apart), so that is not a fold.
-//! A face spanning more than 180° of normal directions without folding would be reported;
-//! no practical mesh has one.
+//! In space a fold is generically not a zero of `du × dv` (that needs `du ∥ dv`, two
+//! conditions) but a tight smooth bend through which the normal turns by nearly 180°; the
+//! first test catches it, the second catches the in-plane folds of flat caps at any
+//! resolution. What is not a fold:
+//! - two samples far apart in one face more than 90° apart (on a coarse cube's limit surface
+//!   opposite corners of a face are 109° apart): only the turn within one finest cell counts;
+//! - a crease or corner, where the normal jumps *between* faces: each face is evaluated on
+//!   its own side;
+//! - the bend of a *semi-sharp* crease of sharpness `s`, which lies inside the faces next to
+//!   the edge, within `min(1, 4 · 2^-ceil(s))` of it in the face's parameter (and around a
+//!   semi-sharp vertex): samples there count for nothing;
+//! - the direction-dependent normal at a cone point (an infinitely sharp vertex with smooth
+//!   edges, sampled one-sidedly): cells touching such a corner have no turn verdict.
+//!
+//! A face whose normals legitimately spread more than 90° from their mean (a very coarse face
+//! on a tight bend) is reported; the check is meant for meshes fine enough that the normal of
+//! a fold-free face stays within 90° of its mean.
 
 use std::collections::HashMap;
 
 use glam::DVec3;
 
 use super::Evaluator;
+use crate::catmark::crease::is_infinite;
 use crate::error::{Error, Result};
 use crate::topology::Level;
 
@@ -147,8 +162,8 @@ pub fn find_folds(evaluator: &Evaluator, settings: &FoldSettings) -> Result<Fold
         let Some((base, sub)) = evaluator.ptex_faces().locate(ptex) else {
             continue;
         };
-        let corners = corner_kinds(&level, mesh.face(base as usize), sub);
-        let face = FaceCheck::run(evaluator, ptex, corners, settings)?;
+        let shape = face_shape(&level, mesh.face(base as usize), sub);
+        let face = FaceCheck::run(evaluator, ptex, shape, settings)?;
         report.faces_checked += 1;
         report.samples += face.samples;
         report.min_relative_jacobian = report.min_relative_jacobian.min(face.min_rel_jacobian);
@@ -231,8 +246,10 @@ fn vertex_kind(level: &Level, v: u32) -> CornerKind {
             .vertex_edges(v)
             .iter()
             .all(|&e| level.edge_sharpness(e as usize) == 0.0);
+    // At interior valence-2 vertices the vertex limit's tangents are OpenSubdiv's
+    // approximate masks, not the limit tangent plane: sample those one-sidedly too.
     CornerKind {
-        exact: smooth,
+        exact: smooth && level.valence(v) >= 3,
         irregular: !(smooth && level.valence(v) == 4),
     }
 }
@@ -252,25 +269,81 @@ fn midpoint_kind(level: &Level, a: u32, b: u32) -> CornerKind {
     }
 }
 
-/// The kinds of the four corners of a Ptex face: a quad's vertices, or for sub-face `k` of
-/// another face its vertex `k`, the midpoint towards the next vertex, the face centre (an
-/// extraordinary smooth point) and the midpoint from the previous vertex.
-fn corner_kinds(level: &Level, face: &[u32], sub: Option<u32>) -> [CornerKind; 4] {
+/// What a Ptex face's sampling needs to know of its control face.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct FaceShape {
+    /// Corners 0..4 at `(0,0)`, `(1,0)`, `(1,1)`, `(0,1)`.
+    corners: [CornerKind; 4],
+    /// Width of the bend zone of each side (0 at `v = 0`, 1 at `u = 1`, 2 at `v = 1`, 3 at
+    /// `u = 0`) and radius of each corner's (max-norm), in the face's `(u, v)`.
+    side_bend: [f64; 4],
+    corner_bend: [f64; 4],
+}
+
+impl FaceShape {
+    /// Whether `(u, v)` is in a bend zone: next to a semi-sharp edge or vertex, where the
+    /// normal legitimately turns by up to the crease's angle within the face.
+    fn in_bend(&self, u: f64, v: f64) -> bool {
+        let to_side = [v, 1.0 - u, 1.0 - v, u];
+        let corner = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+        (0..4).any(|k| {
+            to_side[k] < self.side_bend[k]
+                || (u - corner[k].0).abs().max((v - corner[k].1).abs()) < self.corner_bend[k]
+        })
+    }
+}
+
+/// Width, in a face's parameter, of the strip next to an edge (or around a vertex) of
+/// sharpness `s` in which a semi-sharp crease bends the surface: the crease stays sharp for
+/// `ceil(s)` refinements, so its bend lies within a few faces of level `ceil(s)` (four, to
+/// cover the bicubic supports) of it. Zero for smooth and infinitely sharp features.
+fn bend_width(s: f32) -> f64 {
+    if s <= 0.0 || is_infinite(s) {
+        return 0.0;
+    }
+    (4.0 * 0.5f64.powi(s.ceil() as i32)).min(1.0)
+}
+
+fn edge_sharpness(level: &Level, a: u32, b: u32) -> f32 {
+    level
+        .find_edge(a as usize, b as usize)
+        .map_or(0.0, |e| level.edge_sharpness(e as usize))
+}
+
+/// The shape of a Ptex face: for a quad, its vertices and edges; for sub-face `k` of
+/// another face, its vertex `k`, the midpoint towards the next vertex, the face centre (an
+/// extraordinary smooth point) and the midpoint from the previous vertex, the halves of the
+/// two edges at vertex `k` (at twice the scale: the sub-face spans half the face) and two
+/// interior sides.
+fn face_shape(level: &Level, face: &[u32], sub: Option<u32>) -> FaceShape {
+    let vertex_bend = |v: u32| bend_width(level.vertex_sharpness(v as usize));
     match sub {
-        None => [0, 1, 2, 3].map(|k| vertex_kind(level, face[k])),
+        None => {
+            let side = |k: usize| bend_width(edge_sharpness(level, face[k], face[(k + 1) % 4]));
+            FaceShape {
+                corners: [0, 1, 2, 3].map(|k| vertex_kind(level, face[k])),
+                side_bend: [0, 1, 2, 3].map(side),
+                corner_bend: [0, 1, 2, 3].map(|k| vertex_bend(face[k])),
+            }
+        }
         Some(k) => {
             let n = face.len();
             let k = k as usize;
             let (prev, here, next) = (face[(k + n - 1) % n], face[k], face[(k + 1) % n]);
-            [
-                vertex_kind(level, here),
-                midpoint_kind(level, here, next),
-                CornerKind {
-                    exact: true,
-                    irregular: true,
-                },
-                midpoint_kind(level, prev, here),
-            ]
+            let half = |a: u32, b: u32| (2.0 * bend_width(edge_sharpness(level, a, b))).min(1.0);
+            FaceShape {
+                corners: [
+                    vertex_kind(level, here),
+                    midpoint_kind(level, here, next),
+                    CornerKind {
+                        exact: true,
+                        irregular: true,
+                    },
+                    midpoint_kind(level, prev, here),
+                ],
+                side_bend: [half(here, next), 0.0, 0.0, half(prev, here)],
+                corner_bend: [(2.0 * vertex_bend(here)).min(1.0), 0.0, 0.0, 0.0],
+            }
         }
     }
 }
@@ -282,6 +355,8 @@ struct Sample {
     unit: DVec3,
     /// Derivative lengths are a convention (irregular corner): direction only.
     conventional: bool,
+    /// In a bend zone ([`FaceShape::in_bend`]): left out of the statistics.
+    bend: bool,
 }
 
 /// The check of one Ptex face, on an integer lattice of `m + 1` points per edge, where
@@ -289,7 +364,7 @@ struct Sample {
 struct FaceCheck<'a> {
     ev: &'a Evaluator,
     face: u32,
-    corners: [CornerKind; 4],
+    shape: FaceShape,
     m: u32,
     max_depth: u32,
     refine_cos: f64,
@@ -308,7 +383,7 @@ impl<'a> FaceCheck<'a> {
     fn run(
         ev: &'a Evaluator,
         face: u32,
-        corners: [CornerKind; 4],
+        shape: FaceShape,
         s: &FoldSettings,
     ) -> Result<FaceCheck<'a>> {
         let n = s.samples_per_edge as u32;
@@ -316,7 +391,7 @@ impl<'a> FaceCheck<'a> {
         let mut fc = FaceCheck {
             ev,
             face,
-            corners,
+            shape,
             m: (n - 1) * step,
             max_depth: s.adaptive_depth as u32,
             refine_cos: s.refine_turn_deg.to_radians().cos(),
@@ -334,9 +409,9 @@ impl<'a> FaceCheck<'a> {
         for j in 0..n {
             for i in 0..n {
                 let s = fc.sample(i * step, j * step)?;
-                if !s.conventional {
+                if !s.conventional && !s.bend {
                     let w = trapezoid(i, n) * trapezoid(j, n);
-                    sum += w * s.jacobian;
+                    sum += w * s.unit;
                     sum_len += w * s.jacobian.length();
                     weights += w;
                 }
@@ -379,7 +454,7 @@ impl<'a> FaceCheck<'a> {
         let (mut u, mut v) = (f64::from(i) / f64::from(m), f64::from(j) / f64::from(m));
         let mut conventional = false;
         if let Some(k) = self.corner_at(i, j) {
-            let kind = self.corners[k];
+            let kind = self.shape.corners[k];
             conventional = kind.irregular;
             if !kind.exact {
                 u = if i == 0 {
@@ -400,6 +475,7 @@ impl<'a> FaceCheck<'a> {
             jacobian,
             unit: jacobian.normalize_or_zero(),
             conventional,
+            bend: self.shape.in_bend(u, v),
         };
         self.samples += 1;
         self.cache.insert((i, j), s);
@@ -424,7 +500,7 @@ impl<'a> FaceCheck<'a> {
     /// Add a cached sample to the statistics (once the reference normal is known).
     fn record(&mut self, key: (u32, u32)) {
         let s = self.cache[&key];
-        if s.unit == DVec3::ZERO || self.reference == DVec3::ZERO {
+        if s.unit == DVec3::ZERO || s.bend || self.reference == DVec3::ZERO {
             return;
         }
         let cos = s.unit.dot(self.reference);
@@ -448,15 +524,18 @@ impl<'a> FaceCheck<'a> {
     fn cell(&mut self, i: u32, j: u32, size: u32, depth: u32) -> Result<()> {
         let pts = [(i, j), (i + size, j), (i + size, j + size), (i, j + size)];
         let mut units = [DVec3::ZERO; 4];
+        let mut bend = false;
         for (k, &(a, b)) in pts.iter().enumerate() {
-            units[k] = self.sample(a, b)?.unit;
+            let s = self.sample(a, b)?;
+            units[k] = s.unit;
+            bend |= s.bend;
         }
         let min_cos = min_pair_cos(&units);
         if depth < self.max_depth {
-            let opposes = units.iter().any(|u| u.dot(self.reference) < 0.0);
+            let opposes = !bend && units.iter().any(|u| u.dot(self.reference) < 0.0);
             let at_irregular = pts.iter().any(|&(a, b)| {
                 self.corner_at(a, b)
-                    .is_some_and(|k| self.corners[k].irregular)
+                    .is_some_and(|k| self.shape.corners[k].irregular)
             });
             if min_cos < self.refine_cos || opposes || at_irregular {
                 let h = size / 2;
@@ -466,8 +545,16 @@ impl<'a> FaceCheck<'a> {
                 return Ok(());
             }
         }
-        let turn = min_cos.clamp(-1.0, 1.0).acos().to_degrees();
-        self.max_turn = self.max_turn.max(turn);
+        // At a corner sampled one-sidedly (a cone point such as an infinitely sharp vertex
+        // with smooth edges) the normal legitimately depends on the direction of approach.
+        let at_cone = pts.iter().any(|&(a, b)| {
+            self.corner_at(a, b)
+                .is_some_and(|k| !self.shape.corners[k].exact)
+        });
+        if !at_cone && !bend {
+            let turn = min_cos.clamp(-1.0, 1.0).acos().to_degrees();
+            self.max_turn = self.max_turn.max(turn);
+        }
         Ok(())
     }
 }

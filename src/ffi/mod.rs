@@ -53,6 +53,7 @@
 pub mod error;
 pub mod evaluator;
 pub mod fitted;
+pub mod folds;
 pub mod handle;
 pub mod limit;
 pub mod mesh;
@@ -68,6 +69,7 @@ pub mod sweep;
 pub mod version;
 
 pub use evaluator::profsubd_evaluator;
+pub use folds::profsubd_fold_report;
 pub use limit::profsubd_stencil_table;
 pub use mesh::{profsubd_mesh, profsubd_mesh_desc};
 pub use mesh_topology::profsubd_mesh_report;

@@ -1,0 +1,11 @@
+//! Sampled circular arcs for tests: `mod arc;` via `#[path = "support/arc.rs"]`.
+
+/// `n + 1` points of the circle of radius `r` about the origin, from angle `from` to `to`.
+pub fn arc(n: usize, r: f64, from: f64, to: f64) -> Vec<[f64; 2]> {
+    (0..=n)
+        .map(|i| {
+            let t = from + (to - from) * i as f64 / n as f64;
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}

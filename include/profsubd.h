@@ -1066,6 +1066,29 @@ enum profsubd_status profsubd_profile_get_fit_residual(const struct profsubd_pro
                                                        double *tolerance);
 
 /**
+ * The largest and mean distance from the limit surface to the design surface between the
+ * data points, over the limit surface's bounding-box diagonal: the limit and the design
+ * surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear
+ * between the face's data points' parameters), measured along the design surface's
+ * normal (see the README, "Valid surfaces"). Computed (with the fold check) on the first
+ * call of this or `profsubd_profile_get_surface_quality`. Either output may be NULL.
+ */
+enum profsubd_status profsubd_profile_get_design_distance(const struct profsubd_profile *profile,
+                                                          double *max,
+                                                          double *mean);
+
+/**
+ * The number of control faces whose limit surface folds (the fold check's criterion, `eval::folds`,
+ * with default settings), the worst normal reversal in degrees (above 90 where it folds)
+ * and the undulation: the limit surface's bending energy over the design surface's
+ * (1 = as fair as the design). Any output may be NULL.
+ */
+enum profsubd_status profsubd_profile_get_surface_quality(const struct profsubd_profile *profile,
+                                                          size_t *folded_faces,
+                                                          double *worst_reversal_deg,
+                                                          double *undulation);
+
+/**
  * Set the number of meridians (vertices per ring): a multiple of 4, 4 to 4096.
  */
 enum profsubd_status profsubd_options_set_around(struct profsubd_options *options, uint32_t around);
@@ -1208,6 +1231,29 @@ enum profsubd_status profsubd_swept_get_targets(const struct profsubd_swept *swe
 enum profsubd_status profsubd_swept_get_fit_residual(const struct profsubd_swept *swept,
                                                      double *residual,
                                                      double *tolerance);
+
+/**
+ * The largest and mean distance from the limit surface to the design surface between the
+ * data points, over the limit surface's bounding-box diagonal: the limit and the design
+ * surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear
+ * between the face's data points' parameters), measured along the design surface's
+ * normal (see the README, "Valid surfaces"). Computed (with the fold check) on the first
+ * call of this or `profsubd_swept_get_surface_quality`. Either output may be NULL.
+ */
+enum profsubd_status profsubd_swept_get_design_distance(const struct profsubd_swept *swept,
+                                                        double *max,
+                                                        double *mean);
+
+/**
+ * The number of control faces whose limit surface folds (the fold check's criterion, `eval::folds`,
+ * with default settings), the worst normal reversal in degrees (above 90 where it folds)
+ * and the undulation: the limit surface's bending energy over the design surface's
+ * (1 = as fair as the design). Any output may be NULL.
+ */
+enum profsubd_status profsubd_swept_get_surface_quality(const struct profsubd_swept *swept,
+                                                        size_t *folded_faces,
+                                                        double *worst_reversal_deg,
+                                                        double *undulation);
 
 /**
  * Set the sample intervals: along the profile, and around the axis (revolution) or along

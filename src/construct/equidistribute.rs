@@ -7,11 +7,17 @@
 //! `ρ = 1 + (κ / κ̄)^p` per unit arc length, `κ̄` being the mean curvature of the stretch (its
 //! turning over its length) and `p` [`CURVATURE_EXPONENT`]: a circle or a straight line keeps
 //! uniform rings, a sharply turning part gets up to `(κ / κ̄)^p` times more. The density is
-//! bounded below by 1, so the map stays a smooth reparameterization with positive slope:
-//! composed with the pole grading ([`crate::construct::grading`]) it keeps the zero slope at a
-//! pole.
+//! bounded below by 1, so the map stays a smooth reparameterization with positive slope.
+//!
+//! [`ring_parameters`] places the rings of a stretch between breakpoints this way, and
+//! [`place_samples`] does it for every run of a curve's samples, both only mildly denser
+//! towards smooth poles ([`pole_graded`]): the pole caps ([`crate::construct::pole_cap`])
+//! replace several rings, so the mesh stays quasi-uniform there (rings graded to `O(h²)` next
+//! to a pole made the interpolating fit fold; see the README, "Valid surfaces").
 
 use glam::DVec2;
+
+use crate::curves::CurveSample;
 
 /// Exponent `p` of the curvature ratio in the ring density. A curved stretch of step `h`
 /// leaves an error of about `h⁴ κ³`, equal everywhere when `h ∝ κ^(-3/4)`. Measured on the
@@ -75,6 +81,69 @@ impl Equidistribution {
         let (a, b) = (self.sigma[m], self.sigma[m + 1]);
         let f = if b > a { (s - a) / (b - a) } else { 0.0 };
         (m as f64 + f) / n as f64
+    }
+}
+
+/// Ring spacing at a smooth pole relative to the stretch's mean ([`pole_graded`]).
+pub const POLE_SPACING: f64 = 0.5;
+
+/// The position of the uniform fraction `u ∈ [0, 1]` of a stretch whose ends at `u = 0` and
+/// `u = 1` are smooth poles where `poles` says so: a cubic with slope [`POLE_SPACING`] at a
+/// pole and 1 at another end (`u` without poles), increasing. Mild on purpose: it halves the
+/// rings' spacing near a pole, where the caps' valence-3 corners leave an `O(κh²)` error,
+/// but keeps neighbouring rings within a factor 2 of each other (grading to zero slope put
+/// the first ring `O(h²)` from the pole, and the fit folded in the tiny cap).
+pub fn pole_graded(u: f64, poles: [bool; 2]) -> f64 {
+    let c = POLE_SPACING - 1.0;
+    match poles {
+        [true, true] => u + c * u * (1.0 - u) * (1.0 - 2.0 * u),
+        [true, false] => u + c * u * (1.0 - u) * (1.0 - u),
+        [false, true] => u - c * u * u * (1.0 - u),
+        [false, false] => u,
+    }
+}
+
+/// Parameters of the `rings + 1` rings of a stretch `range` of a curve parameter (ends
+/// included) between breakpoints: uniform in the curvature-weighted length of the curves
+/// traced by `points`, mildly denser towards a smooth pole at the start when `poles[0]` and
+/// at the end when `poles[1]` ([`pole_graded`]).
+pub fn ring_parameters<const K: usize>(
+    range: [f64; 2],
+    rings: usize,
+    poles: [bool; 2],
+    points: impl Fn(f64) -> [DVec2; K],
+) -> Vec<f64> {
+    let [a, b] = range;
+    let n = probe_count(rings);
+    let probes: Vec<[DVec2; K]> = (0..=n)
+        .map(|m| points(a + (b - a) * m as f64 / n as f64))
+        .collect();
+    let curves: Vec<Vec<DVec2>> = (0..K)
+        .map(|k| probes.iter().map(|p| p[k]).collect())
+        .collect();
+    let eq = Equidistribution::new(&curves);
+    (0..=rings)
+        .map(|i| a + (b - a) * eq.inverse(pole_graded(i as f64 / rings as f64, poles)))
+        .collect()
+}
+
+/// Replace curve samples (uniform within each run between corner samples, first and last
+/// sample included) by [`ring_parameters`] of each run of the curve `point(s)`, the first run
+/// graded towards a smooth pole at the first sample when `poles[0]`, the last towards the
+/// last sample when `poles[1]`.
+pub fn place_samples(samples: &mut [CurveSample], poles: [bool; 2], point: impl Fn(f64) -> DVec2) {
+    let n = samples.len();
+    let breaks: Vec<usize> = (0..n)
+        .filter(|&i| i == 0 || i + 1 == n || samples[i].corner)
+        .collect();
+    let runs = breaks.len().saturating_sub(1);
+    for (r, w) in breaks.windows(2).enumerate() {
+        let range = [samples[w[0]].s, samples[w[1]].s];
+        let ends = [r == 0 && poles[0], r + 1 == runs && poles[1]];
+        let s = ring_parameters(range, w[1] - w[0], ends, |s| [point(s)]);
+        for (sample, &s) in samples[w[0] + 1..w[1]].iter_mut().zip(&s[1..]) {
+            sample.s = s;
+        }
     }
 }
 
@@ -161,5 +230,61 @@ mod tests {
         let first = arc_to(e.inverse(0.1)) / length;
         let last = 1.0 - arc_to(e.inverse(0.9)) / length;
         assert!(first < 0.05 && last > 0.1, "{first} {last}");
+    }
+
+    #[test]
+    fn pole_grading_is_mild_and_monotone() {
+        let d = 1e-7;
+        for poles in [[true, true], [true, false], [false, true], [false, false]] {
+            assert_eq!(pole_graded(0.0, poles), 0.0);
+            assert!((pole_graded(1.0, poles) - 1.0).abs() < 1e-15);
+            let slope = |u: f64| (pole_graded(u + d, poles) - pole_graded(u, poles)) / d;
+            let expect = |pole: bool| if pole { POLE_SPACING } else { 1.0 };
+            assert!((slope(0.0) - expect(poles[0])).abs() < 1e-6, "{poles:?}");
+            assert!(
+                (slope(1.0 - d) - expect(poles[1])).abs() < 1e-6,
+                "{poles:?}"
+            );
+            // Neighbouring spacings stay within a factor 2 and positive.
+            assert!((0..100).all(|i| {
+                let s = slope(i as f64 / 100.0);
+                (0.49..=1.5).contains(&s)
+            }));
+        }
+    }
+
+    #[test]
+    fn samples_are_placed_per_run_between_corners() {
+        let samples = |corner_at: usize| -> Vec<CurveSample> {
+            (0..=8)
+                .map(|i| CurveSample {
+                    s: 2.0 * i as f64,
+                    corner: i == corner_at,
+                })
+                .collect()
+        };
+        // A straight curve: the spacing stays uniform in each run.
+        let line = |s: f64| DVec2::new(1.0, 2.0) * s;
+        let mut s = samples(4);
+        place_samples(&mut s, [false; 2], line);
+        let got: Vec<f64> = s.iter().map(|c| c.s).collect();
+        let expect: Vec<f64> = (0..=8).map(|i| 2.0 * i as f64).collect();
+        assert!(got.iter().zip(&expect).all(|(a, b)| (a - b).abs() < 1e-12));
+        // A quarter circle then a straight run, split at a corner: each run keeps its ends,
+        // the circle stays uniform in angle (its density is constant).
+        let bend = |s: f64| {
+            if s <= 8.0 {
+                let a = s / 8.0 * std::f64::consts::FRAC_PI_2;
+                DVec2::new(a.cos(), a.sin())
+            } else {
+                DVec2::new(-(s - 8.0), 1.0)
+            }
+        };
+        let mut s = samples(4);
+        s[2].s = 1.0;
+        place_samples(&mut s, [false; 2], bend);
+        assert_eq!((s[0].s, s[4].s, s[8].s), (0.0, 8.0, 16.0));
+        assert!((s[2].s - 4.0).abs() < 1e-9, "{}", s[2].s);
+        assert!((s[6].s - 12.0).abs() < 1e-9, "{}", s[6].s);
     }
 }

@@ -73,6 +73,40 @@ impl QuadMeshBuilder {
         Ok(())
     }
 
+    /// Close a crease `ring` (4k ids, oriented as for [`QuadMeshBuilder::grid_cap`]) with a
+    /// flat cap: one ring of quads to an inner ring at relative radius
+    /// [`flat_cap_inner_radius`], then a grid cap inside that. `place` gets each new vertex's
+    /// position relative to the outer ring (radius 1 on it). The inner ring keeps every
+    /// vertex of the crease ring regular (two faces on the cap side): a grid cap's corner
+    /// placed on the crease would have one face spanning a straight angle, where the limit's
+    /// two tangents along the crease are parallel and the surface folds in its plane.
+    pub fn flat_cap(
+        &mut self,
+        ring: &[u32],
+        flip: bool,
+        mut place: impl FnMut(CapVertex) -> DVec3,
+    ) -> Result<()> {
+        let n = ring.len();
+        let inner_radius = flat_cap_inner_radius(n);
+        let inner = self.add_ring((0..n).map(|p| {
+            place(CapVertex {
+                radius: inner_radius,
+                turn: p as f64 / n as f64,
+            })
+        }));
+        if flip {
+            self.connect_rings(&inner, ring, true);
+        } else {
+            self.connect_rings(ring, &inner, true);
+        }
+        self.grid_cap(&inner, flip, |v| {
+            place(CapVertex {
+                radius: v.radius * inner_radius,
+                turn: v.turn,
+            })
+        })
+    }
+
     /// Close `ring` at a new tip vertex at `p`, tagged as a corner of `sharpness`.
     pub fn tip(&mut self, ring: &[u32], p: DVec3, sharpness: f32, flip: bool) -> Result<u32> {
         let tip = self.add_vertex(p);
@@ -117,4 +151,12 @@ impl QuadMeshBuilder {
             options,
         }
     }
+}
+
+/// Relative radius of a flat cap's inner ring around a ring of `n = 4k` vertices:
+/// `k / (k + 2)`, so that the cap's `k / 2` concentric squares and the one ring of quads
+/// outside them step inwards equally.
+pub fn flat_cap_inner_radius(n: usize) -> f64 {
+    let k = (n / 4) as f64;
+    k / (k + 2.0)
 }

@@ -4,8 +4,10 @@
 
 use glam::DVec3;
 
+use crate::construct::design::SurfaceReport;
 use crate::construct::profile::ProfileModel;
 use crate::construct::sweep::SweptSurface;
+use crate::error::Result;
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh};
 use crate::ffi::panic::status_call;
@@ -22,6 +24,8 @@ pub trait Fitted {
     fn targets(&self) -> &[DVec3];
     /// The achieved residual and its tolerance.
     fn fit(&self) -> &FitReport;
+    /// Distance to the design surface, folds, undulation (computed on the first call).
+    fn surface_report(&self) -> Result<&SurfaceReport>;
 }
 
 /// Both constructions' results hold the three as fields of the same names.
@@ -36,6 +40,9 @@ macro_rules! fitted_fields {
             }
             fn fit(&self) -> &FitReport {
                 &self.fit
+            }
+            fn surface_report(&self) -> Result<&SurfaceReport> {
+                <$t>::surface_report(self)
             }
         }
     )*};
@@ -102,6 +109,64 @@ where
         }
         if let Some(t) = t {
             t.write(fit.tolerance);
+        }
+        Ok(())
+    })
+}
+
+/// Write the largest and mean distance from the limit surface to the design surface (over
+/// the bounding-box diagonal) to the outputs that are not NULL.
+pub unsafe fn get_design_distance<H: Handle>(
+    model: *const H,
+    name: &str,
+    max: *mut f64,
+    mean: *mut f64,
+) -> profsubd_status
+where
+    H::Inner: Fitted,
+{
+    status_call(|| {
+        let model = handle::borrow(model, name)?;
+        let (max, mean) = (arg_out_opt(max, "max")?, arg_out_opt(mean, "mean")?);
+        let report = model.surface_report()?;
+        if let Some(m) = max {
+            m.write(report.max_design_distance);
+        }
+        if let Some(m) = mean {
+            m.write(report.mean_design_distance);
+        }
+        Ok(())
+    })
+}
+
+/// Write the number of folded faces, the worst normal reversal (degrees) and the undulation
+/// (bending energy over the design surface's) to the outputs that are not NULL.
+pub unsafe fn get_surface_quality<H: Handle>(
+    model: *const H,
+    name: &str,
+    folded_faces: *mut usize,
+    worst_reversal_deg: *mut f64,
+    undulation: *mut f64,
+) -> profsubd_status
+where
+    H::Inner: Fitted,
+{
+    status_call(|| {
+        let model = handle::borrow(model, name)?;
+        let (folded, worst, und) = (
+            arg_out_opt(folded_faces, "folded_faces")?,
+            arg_out_opt(worst_reversal_deg, "worst_reversal_deg")?,
+            arg_out_opt(undulation, "undulation")?,
+        );
+        let report = model.surface_report()?;
+        if let Some(o) = folded {
+            o.write(report.folded_faces);
+        }
+        if let Some(o) = worst {
+            o.write(report.worst_reversal_deg);
+        }
+        if let Some(o) = und {
+            o.write(report.undulation);
         }
         Ok(())
     })

@@ -81,6 +81,31 @@ fn builds_the_same_model_as_the_rust_api() {
             PROFSUBD_OK
         );
         assert!(r <= tol && tol > 0.0);
+        // The surface report, computed once, through both getters.
+        let report = model.surface_report().unwrap();
+        let (mut max, mut mean, mut folded, mut worst, mut und) =
+            (f64::NAN, f64::NAN, usize::MAX, f64::NAN, f64::NAN);
+        assert_eq!(
+            profsubd_profile_get_design_distance(p, &mut max, &mut mean),
+            PROFSUBD_OK
+        );
+        assert_eq!(
+            (max, mean),
+            (report.max_design_distance, report.mean_design_distance)
+        );
+        assert!(mean > 0.0 && mean <= max && max < 0.05, "{max} {mean}");
+        assert_eq!(
+            profsubd_profile_get_surface_quality(p, &mut folded, &mut worst, &mut und),
+            PROFSUBD_OK
+        );
+        assert_eq!(
+            (folded, worst, und),
+            (0, report.worst_reversal_deg, report.undulation)
+        );
+        assert_eq!(
+            profsubd_profile_get_surface_quality(p, null_mut(), null_mut(), null_mut()),
+            PROFSUBD_OK
+        );
         profsubd_mesh_free(m);
         profsubd_profile_free(p);
         profsubd_options_free(o);
@@ -206,6 +231,14 @@ fn bad_inputs_and_settings_give_specific_statuses() {
         assert_eq!(
             profsubd_profile_get_fit_residual(null(), null_mut(), null_mut()),
             PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_profile_get_design_distance(null(), null_mut(), null_mut()),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        assert_eq!(
+            profsubd_profile_get_surface_quality(f, null_mut(), null_mut(), null_mut()),
+            PROFSUBD_ERROR_INVALID_HANDLE
         );
         profsubd_profile_free(null_mut());
         profsubd_options_free(o);

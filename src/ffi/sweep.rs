@@ -219,6 +219,35 @@ pub unsafe extern "C" fn profsubd_swept_get_fit_residual(
     fitted::get_fit_residual(swept, "swept", residual, tolerance)
 }
 
+/// The largest and mean distance from the limit surface to the design surface between the
+/// data points, over the limit surface's bounding-box diagonal: the limit and the design
+/// surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear
+/// between the face's data points' parameters), measured along the design surface's
+/// normal (see the README, "Valid surfaces"). Computed (with the fold check) on the first
+/// call of this or `profsubd_swept_get_surface_quality`. Either output may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_swept_get_design_distance(
+    swept: *const profsubd_swept,
+    max: *mut f64,
+    mean: *mut f64,
+) -> profsubd_status {
+    fitted::get_design_distance(swept, "swept", max, mean)
+}
+
+/// The number of control faces whose limit surface folds (the fold check's criterion, `eval::folds`,
+/// with default settings), the worst normal reversal in degrees (above 90 where it folds)
+/// and the undulation: the limit surface's bending energy over the design surface's
+/// (1 = as fair as the design). Any output may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_swept_get_surface_quality(
+    swept: *const profsubd_swept,
+    folded_faces: *mut usize,
+    worst_reversal_deg: *mut f64,
+    undulation: *mut f64,
+) -> profsubd_status {
+    fitted::get_surface_quality(swept, "swept", folded_faces, worst_reversal_deg, undulation)
+}
+
 unsafe fn set(
     options: *mut profsubd_options,
     apply: impl FnOnce(&mut SweepSettings) -> FfiResult<()>,

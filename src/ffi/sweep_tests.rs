@@ -69,6 +69,18 @@ fn revolve_and_sweep_build_what_the_rust_api_builds() {
             PROFSUBD_OK
         );
         assert!(r <= t && t == expect.fit.tolerance);
+        let report = expect.surface_report().unwrap();
+        let (mut max, mut folded, mut und) = (f64::NAN, usize::MAX, f64::NAN);
+        assert_eq!(
+            profsubd_swept_get_design_distance(s, &mut max, null_mut()),
+            PROFSUBD_OK
+        );
+        assert_eq!(max, report.max_design_distance);
+        assert_eq!(
+            profsubd_swept_get_surface_quality(s, &mut folded, null_mut(), &mut und),
+            PROFSUBD_OK
+        );
+        assert_eq!((folded, und), (report.folded_faces, report.undulation));
         profsubd_swept_free(s);
 
         // A torus with a scaled, closed profile along a closed trajectory.

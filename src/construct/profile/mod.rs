@@ -30,7 +30,9 @@ use glam::DVec3;
 pub use input::{Caps, ForcedCorners, ProfileInput};
 pub use silhouettes::EndKind;
 
+use crate::construct::design::{parts_lattice, Design, DesignCoord, DesignLattice, SurfaceReport};
 use crate::construct::grid::QuadMeshBuilder;
+use crate::construct::pole_cap::{grid_cap_depth, CapVertex};
 use crate::error::Result;
 use crate::fit::{fit_cage, FitReport, FittedCage};
 use crate::mesh::{Mesh, MeshParts, SHARPNESS_INFINITE};
@@ -50,6 +52,8 @@ pub struct ProfileCage {
     pub crease_rings: Vec<usize>,
     /// Bounding-box diagonal of the input points.
     pub size: f64,
+    /// The design surface on every face's lattice ([`crate::construct::design`]).
+    pub design: DesignLattice,
 }
 
 /// Steps 1–4: the cage with data points, not yet fitted (tagged with the input's options).
@@ -66,55 +70,64 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
         )));
     }
     let k = n / 4;
-    // The cap fills the ring next to the pole, whose distance shrinks like h² with the
-    // graded rings (see `crate::construct::grading`).
-    let cap_rings = 1;
-    let rings = Rings::new(&sil, &param, input.along as usize, cap_rings)?;
+    // A smooth pole's cap replaces several rings, so its cells are about as large as the
+    // faces around it (see `pole_cap::grid_cap_depth`).
+    let rings = Rings::new(&sil, &param, input.along as usize, grid_cap_depth(n))?;
     let meridian = |q: usize| TAU * q as f64 / n as f64;
-    let curve_at = |t: f64| param.points(&sil, t);
     let mut b = QuadMeshBuilder::new();
     let [bottom, top] = sil.ends;
-    let offset = |e: EndKind| match e {
+    let offset = |e: EndKind, end: usize| match e {
         EndKind::Open | EndKind::Flat => 0,
         EndKind::Tip => 1,
-        EndKind::Smooth => cap_rings,
+        EndKind::Smooth => rings.cap_depth[end],
     };
-    let (lo, hi) = (offset(bottom), rings.t.len() - 1 - offset(top));
+    let design = ProfileDesign {
+        sil: &sil,
+        param: &param,
+        rings: &rings,
+        depth: [offset(bottom, 0), offset(top, 1)],
+    };
+    let (lo, hi) = (design.depth[0], rings.t.len() - 1 - design.depth[1]);
+    let mut coords = Vec::new();
     let mut ids: Vec<Vec<u32>> = Vec::with_capacity(hi + 1 - lo);
     for r in lo..=hi {
-        let c = curve_at(rings.t[r]);
+        let s = rings.t[r];
+        let c = param.points(&sil, s);
+        coords.extend((0..n).map(|q| DesignCoord::Side {
+            s,
+            theta: meridian(q),
+        }));
         ids.push(b.add_ring((0..n).map(|q| sweep::surface(meridian(q), &c))));
     }
     for w in ids.windows(2) {
         b.connect_rings(&w[0], &w[1], true);
     }
-    for (e, kind) in sil.ends.into_iter().enumerate() {
-        let (ring, flip, t_end) = if e == 0 {
-            (&ids[0], true, rings.t[0])
+    for (end, kind) in sil.ends.into_iter().enumerate() {
+        let (ring, flip) = if end == 0 {
+            (&ids[0], true)
         } else {
-            (&ids[ids.len() - 1], false, rings.t[rings.t.len() - 1])
+            (&ids[ids.len() - 1], false)
+        };
+        // Each new vertex's data point is the design surface at its cap coordinates.
+        let mut place = |v: CapVertex| {
+            let (rho, theta) = (v.radius, TAU * v.turn);
+            coords.push(DesignCoord::Cap { end, rho, theta });
+            design.cap(end, rho, theta)
         };
         match kind {
             EndKind::Open => {}
             EndKind::Flat => {
-                let c = curve_at(t_end);
-                let centre = sweep::axis(&c);
-                b.grid_cap(ring, flip, |v| {
-                    centre + (sweep::surface(TAU * v.turn, &c) - centre) * v.radius
-                })?;
+                b.flat_cap(ring, flip, place)?;
                 b.crease_ring(ring, 0..n, input.crease_sharpness);
             }
             EndKind::Tip => {
-                let p = sweep::surface(0.0, &curve_at(t_end));
+                let p = place(CapVertex {
+                    radius: 0.0,
+                    turn: 0.0,
+                });
                 b.tip(ring, p, SHARPNESS_INFINITE, flip)?;
             }
-            EndKind::Smooth => {
-                b.grid_cap(ring, flip, |v| {
-                    let depth = v.radius * cap_rings as f64;
-                    let t = rings.cap_t(e, depth);
-                    sweep::surface(TAU * v.turn, &curve_at(t))
-                })?;
-            }
+            EndKind::Smooth => b.grid_cap(ring, flip, place)?,
         }
     }
     let mut crease_rings = Vec::new();
@@ -132,12 +145,53 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
         );
         crease_rings.push(r);
     }
+    let parts = b.finish(input.fit_options().tags());
+    let design = parts_lattice(&parts, &coords, &design);
     Ok(ProfileCage {
-        parts: b.finish(input.fit_options().tags()),
+        parts,
         ends: sil.ends,
         crease_rings,
         size: sil.size,
+        design,
     })
+}
+
+/// The Hui–Lai design surface of a profile model, in [`DesignCoord`]s: the side at ring
+/// parameter `s = t` and angle `θ` is the blended quadrant sweep [`sweep::surface`]; a
+/// smooth pole's cap at relative radius `ρ` is the sweep at the parameter `ρ` of the way
+/// (linearly by ring) from the pole to the ring it closes, a tip's fan likewise over its one
+/// ring interval, and a flat cap is the end's section scaled by `ρ` about the axis point.
+struct ProfileDesign<'a> {
+    sil: &'a Silhouettes,
+    param: &'a CommonParam,
+    rings: &'a Rings,
+    /// Ring intervals each end's cap or tip replaces.
+    depth: [usize; 2],
+}
+
+impl Design for ProfileDesign<'_> {
+    fn side(&self, s: f64, theta: f64) -> DVec3 {
+        sweep::surface(theta, &self.param.points(self.sil, s))
+    }
+
+    fn angle(&self, theta: f64) -> f64 {
+        theta
+    }
+
+    fn cap(&self, end: usize, rho: f64, theta: f64) -> DVec3 {
+        if self.sil.ends[end] == EndKind::Flat {
+            let t_end = self.rings.t[if end == 0 { 0 } else { self.rings.t.len() - 1 }];
+            let c = self.param.points(self.sil, t_end);
+            let centre = sweep::axis(&c);
+            return centre + (sweep::surface(theta, &c) - centre) * rho;
+        }
+        let t = self.rings.cap_t(end, rho * self.depth[end] as f64);
+        self.side(t, theta)
+    }
+
+    fn periods(&self) -> [Option<f64>; 2] {
+        [None, Some(TAU)]
+    }
 }
 
 /// The data point of every vertex of `cage` (its positions), as 3-D points.
@@ -158,6 +212,17 @@ pub struct ProfileModel {
     pub ends: [EndKind; 2],
     /// Ring index (0 = bottom) of each ring that carries crease edges.
     pub crease_rings: Vec<usize>,
+    /// The design surface (the blended quadrant sweeps) on every face's lattice.
+    pub design: DesignLattice,
+}
+
+impl ProfileModel {
+    /// Distance to the design surface between the data points, folds and undulation of the
+    /// fitted limit surface ([`crate::construct::design::surface_report`]), computed on the
+    /// first call. Errors: those of the evaluation.
+    pub fn surface_report(&self) -> Result<&SurfaceReport> {
+        self.design.report(&self.mesh)
+    }
 }
 
 /// The whole pipeline: silhouettes → data points → cage → control points whose exact limit
@@ -175,6 +240,7 @@ pub fn build(input: &ProfileInput) -> Result<ProfileModel> {
         fit,
         ends: cage.ends,
         crease_rings: cage.crease_rings,
+        design: cage.design,
     })
 }
 

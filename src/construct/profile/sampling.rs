@@ -1,15 +1,19 @@
 //! Ring placement: `along` ring intervals shared among the segments between breakpoints.
 //!
 //! Each segment `[T_j, T_{j+1}]` gets intervals in proportion to its length (largest
-//! deficit first), at least one, and a segment next to a smooth pole at least the number of
-//! rings its grid cap spans. Inside a segment rings are uniform in the curvature-weighted
-//! length of the four curves ([`crate::construct::equidistribute`]), graded towards the pole
-//! in a segment ending at a smooth pole ([`crate::construct::grading`]); a ring passes
-//! through every breakpoint.
+//! deficit first), at least one. Inside a segment rings are uniform in the
+//! curvature-weighted length of the four curves ([`crate::construct::equidistribute`]); a
+//! ring passes through every breakpoint.
+//!
+//! A smooth pole's grid cap replaces the innermost rings of its segment ([`cap_depths`]):
+//! as many as its concentric squares (`around / 8`), so that the cap's cells are as large as
+//! the faces around it, but never the segment's last ring
+//! ([`crate::construct::pole_cap::cap_depths`]).
 
 use super::param::CommonParam;
 use super::silhouettes::{EndKind, Silhouettes};
-use crate::construct::grading::ring_parameters;
+use crate::construct::equidistribute::ring_parameters;
+use crate::construct::pole_cap::cap_depths;
 use crate::error::{Error, Result};
 
 /// The rings of a profile model.
@@ -19,10 +23,13 @@ pub struct Rings {
     pub t: Vec<f64>,
     /// Ring index of each global breakpoint `T_j`.
     pub ring_of_break: Vec<usize>,
+    /// Rings replaced by the grid cap at each end (bottom, top); 0 unless a smooth pole.
+    pub cap_depth: [usize; 2],
 }
 
 impl Rings {
-    /// Place `along` ring intervals; `cap_rings` is the depth of a smooth pole's cap.
+    /// Place `along` ring intervals; a smooth pole's cap replaces up to `cap_squares` of them
+    /// ([`cap_depths`]), at least one.
     ///
     /// Errors ([`Error::InvalidArgument`]): `along` too small for the segments and caps; the
     /// curves crossing the axis at a ring.
@@ -30,8 +37,10 @@ impl Rings {
         sil: &Silhouettes,
         param: &CommonParam,
         along: usize,
-        cap_rings: usize,
+        cap_squares: usize,
     ) -> Result<Rings> {
+        // The least a cap replaces; the checks below need room for that much.
+        let cap_rings = 1;
         let segs = param.segments();
         let mut min = vec![1usize; segs];
         if sil.ends[0] == EndKind::Smooth {
@@ -67,10 +76,29 @@ impl Rings {
             )));
         }
         let mut count = min;
+        // A smooth pole's segment first gets room for its cap and one interval outside it
+        // (`cap_depths`), as far as `along` allows: a cap squeezed into one ring folds.
+        let mut used = need;
+        for (end, seg) in [(0, 0), (1, segs - 1)] {
+            if sil.ends[end] != EndKind::Smooth {
+                continue;
+            }
+            let want = if segs == 1 && sil.ends == [EndKind::Smooth; 2] {
+                2 * cap_squares + 1
+            } else if segs == 1 && sil.ends.contains(&EndKind::Tip) {
+                cap_squares + 2
+            } else {
+                cap_squares + 1
+            };
+            while count[seg] < want && used < along {
+                count[seg] += 1;
+                used += 1;
+            }
+        }
         let ideal: Vec<f64> = (0..segs)
             .map(|j| along as f64 * (param.t[j + 1] - param.t[j]))
             .collect();
-        for _ in need..along {
+        for _ in used..along {
             let j = (0..segs)
                 .max_by(|&a, &b| {
                     (ideal[a] - count[a] as f64).total_cmp(&(ideal[b] - count[b] as f64))
@@ -105,7 +133,17 @@ impl Rings {
                 )));
             }
         }
-        Ok(Rings { t, ring_of_break })
+        let cap_depth = cap_depths(
+            sil.ends.map(|e| e == EndKind::Smooth),
+            sil.ends.map(|e| e == EndKind::Tip),
+            &count,
+            cap_squares,
+        );
+        Ok(Rings {
+            t,
+            ring_of_break,
+            cap_depth,
+        })
     }
 
     /// Parameter at fractional ring depth `depth` from end `end` (0 bottom, 1 top), linear

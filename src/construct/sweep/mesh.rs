@@ -7,6 +7,9 @@
 use glam::DVec3;
 
 use super::sweep::{GridEnd, SweepGrid};
+use std::f64::consts::TAU;
+
+use crate::construct::design::DesignCoord;
 use crate::construct::grid::QuadMeshBuilder;
 use crate::construct::pole_cap::CapVertex;
 use crate::error::{Error, Result};
@@ -24,6 +27,16 @@ pub fn grid_mesh(
     grid: &SweepGrid,
     cap_point: &dyn Fn(usize, CapVertex) -> DVec3,
 ) -> Result<MeshParts> {
+    Ok(grid_mesh_coords(grid, cap_point)?.0)
+}
+
+/// [`grid_mesh`] and the design coordinates of its vertices: ring `i`'s vertex `j` at
+/// `Side { s: i, theta: j }` (indices), a cap's vertices at their relative radius and angle
+/// (a tip at radius 0).
+pub fn grid_mesh_coords(
+    grid: &SweepGrid,
+    cap_point: &dyn Fn(usize, CapVertex) -> DVec3,
+) -> Result<(MeshParts, Vec<DesignCoord>)> {
     let rows = grid.rings.len();
     if rows == 0 || grid.rings.iter().any(|r| r.len() != grid.rings[0].len()) {
         return Err(Error::invalid_argument(
@@ -35,6 +48,14 @@ pub fn grid_mesh(
         .rings
         .iter()
         .map(|r| b.add_ring(r.iter().copied()))
+        .collect();
+    let mut coords: Vec<DesignCoord> = (0..rows)
+        .flat_map(|i| {
+            (0..grid.rings[i].len()).map(move |j| DesignCoord::Side {
+                s: i as f64,
+                theta: j as f64,
+            })
+        })
         .collect();
     let ring_spans = if grid.ring_closed {
         ids[0].len()
@@ -53,14 +74,27 @@ pub fn grid_mesh(
     for (end, kind) in grid.ends.iter().enumerate() {
         let ring = if end == 0 { &ids[0] } else { &ids[rows - 1] };
         let flip = (end == 0) != grid.flip;
+        let mut place = |v: CapVertex| {
+            coords.push(DesignCoord::Cap {
+                end,
+                rho: v.radius,
+                theta: TAU * v.turn,
+            });
+            cap_point(end, v)
+        };
         match *kind {
             GridEnd::Open => {}
             GridEnd::Tip(p) => {
+                coords.push(DesignCoord::Cap {
+                    end,
+                    rho: 0.0,
+                    theta: 0.0,
+                });
                 b.tip(ring, p, SHARPNESS_INFINITE, flip)?;
             }
-            GridEnd::Smooth => b.grid_cap(ring, flip, |v| cap_point(end, v))?,
+            GridEnd::Smooth => b.grid_cap(ring, flip, place)?,
             GridEnd::Flat => {
-                b.grid_cap(ring, flip, |v| cap_point(end, v))?;
+                b.flat_cap(ring, flip, &mut place)?;
                 b.crease_ring(ring, 0..ring_spans, SHARPNESS_INFINITE);
             }
         }
@@ -72,7 +106,7 @@ pub fn grid_mesh(
         let column: Vec<u32> = ids.iter().map(|r| r[j]).collect();
         b.crease_ring(&column, 0..row_spans, grid.crease_sharpness);
     }
-    Ok(b.finish(PartialOptions::default()))
+    Ok((b.finish(PartialOptions::default()), coords))
 }
 
 #[cfg(test)]

@@ -39,12 +39,13 @@ use std::path::Path;
 use glam::{DVec2, DVec3};
 use serde::Deserialize;
 
-use super::mesh::grid_mesh;
+use super::mesh::grid_mesh_coords;
 use super::profile::check_no_crossing;
 use super::sweep::{sample_counts_ok, GridEnd, SweepGrid};
 use super::wedge::wedge_parts;
-use crate::construct::grading::grade_samples;
-use crate::construct::pole_cap::CapVertex;
+use crate::construct::design::{parts_lattice, Design, DesignLattice};
+use crate::construct::equidistribute::place_samples;
+use crate::construct::pole_cap::{cap_depths, grid_cap_depth};
 use crate::construct::profile::input::{
     check_crease_sharpness, default_crease_sharpness, deserialize_sharpness,
 };
@@ -317,22 +318,28 @@ impl RevolveInput {
     /// the grid of [`RevolveInput::grid`] with its poles capped, cap vertices placed on the
     /// surface by [`cap_point`].
     pub fn mesh_parts(&self) -> Result<MeshParts> {
+        Ok(self.cage()?.0)
+    }
+
+    /// [`RevolveInput::mesh_parts`] and the design surface (the surface of revolution of the
+    /// profile curve) on every face's lattice ([`crate::construct::design`]).
+    pub fn cage(&self) -> Result<(MeshParts, DesignLattice)> {
         let profile = self.profile_curve()?;
         let (grid, ring_s) = self.rings(&profile)?;
-        if !self.full_turn() {
-            return wedge_parts(self, &profile, &grid, &ring_s);
-        }
-        let [s0, s1] = profile.range();
-        let ring = [ring_s[0], ring_s[ring_s.len() - 1]];
-        let place = |end: usize, v: CapVertex| {
-            if grid.ends[end] == GridEnd::Flat {
-                let p = profile.point(ring[end]);
-                return revolve_point(DVec2::new(v.radius * p.x, p.y), TAU * v.turn);
-            }
-            let pole = [s0, s1][end];
-            cap_point(&profile, ring[end], pole, v.radius, v.turn)
+        let design = RevolveDesign {
+            profile: &profile,
+            ring_s: &ring_s,
+            ends: grid.ends,
+            step: self.angle_deg.to_radians() / self.samples_around as f64,
+            period: self.full_turn().then_some(self.samples_around as f64),
         };
-        grid_mesh(&grid, &place)
+        let (parts, coords) = if self.full_turn() {
+            grid_mesh_coords(&grid, &|end, v| design.cap(end, v.radius, TAU * v.turn))?
+        } else {
+            wedge_parts(self, &profile, &grid, &ring_s)?
+        };
+        let lattice = parts_lattice(&parts, &coords, &design);
+        Ok((parts, lattice))
     }
 
     /// Check the end kinds against the angle, the caps and `samples_around`.
@@ -400,15 +407,32 @@ impl RevolveInput {
                 self.samples_profile
             )));
         }
-        grade_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth), |s| {
+        place_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth), |s| {
             profile.point(s)
         });
-        if ends[1] != GridEnd::Open {
-            samples.pop();
+        // Samples each end's cap or tip replaces: one (the pole) for a tip and for a partial
+        // turn's sector; a full turn's smooth pole several, so that its grid cap's cells are
+        // about as large as the faces around it (`grid_cap_depth`).
+        let mut depth = ends.map(|e| usize::from(e != GridEnd::Open));
+        if self.full_turn() {
+            let breaks: Vec<usize> = (0..samples.len())
+                .filter(|&i| i == 0 || i + 1 == samples.len() || samples[i].corner)
+                .collect();
+            let runs: Vec<usize> = breaks.windows(2).map(|w| w[1] - w[0]).collect();
+            let caps = cap_depths(
+                ends.map(|e| e == GridEnd::Smooth),
+                ends.map(|e| matches!(e, GridEnd::Tip(_))),
+                &runs,
+                grid_cap_depth(na),
+            );
+            for e in 0..2 {
+                if ends[e] == GridEnd::Smooth {
+                    depth[e] = caps[e];
+                }
+            }
         }
-        if ends[0] != GridEnd::Open {
-            samples.remove(0);
-        }
+        samples.truncate(samples.len() - depth[1]);
+        samples.drain(..depth[0]);
         let (count, closed) = if self.full_turn() {
             (na, true)
         } else {
@@ -448,6 +472,51 @@ impl RevolveInput {
             crease_sharpness: self.crease_sharpness,
         };
         Ok((grid, samples.iter().map(|c| c.s).collect()))
+    }
+}
+
+/// The surface of revolution in the design coordinates of [`grid_mesh_coords`]: ring index
+/// `s` (the profile parameter linear between rings), meridian index `θ` (`θ × step`
+/// radians); a smooth pole's cap or a tip's fan at relative radius `ρ` by [`cap_point`], a
+/// flat cap the end ring's circle scaled by `ρ`.
+struct RevolveDesign<'a> {
+    profile: &'a RevolvedProfile,
+    ring_s: &'a [f64],
+    ends: [GridEnd; 2],
+    step: f64,
+    /// Meridian intervals of a full turn.
+    period: Option<f64>,
+}
+
+impl Design for RevolveDesign<'_> {
+    fn side(&self, s: f64, theta: f64) -> DVec3 {
+        let last = self.ring_s.len() - 1;
+        let i = (s.floor().max(0.0) as usize).min(last.saturating_sub(1));
+        let f = s - i as f64;
+        let t = if last == 0 {
+            self.ring_s[0]
+        } else {
+            self.ring_s[i] + f * (self.ring_s[i + 1] - self.ring_s[i])
+        };
+        revolve_point(self.profile.point(t), self.angle(theta))
+    }
+
+    fn angle(&self, theta: f64) -> f64 {
+        theta * self.step
+    }
+
+    fn cap(&self, end: usize, rho: f64, theta: f64) -> DVec3 {
+        let ring = self.ring_s[if end == 0 { 0 } else { self.ring_s.len() - 1 }];
+        if self.ends[end] == GridEnd::Flat {
+            let p = self.profile.point(ring);
+            return revolve_point(DVec2::new(rho * p.x, p.y), theta);
+        }
+        let pole = self.profile.range()[end];
+        cap_point(self.profile, ring, pole, rho, theta / TAU)
+    }
+
+    fn periods(&self) -> [Option<f64>; 2] {
+        [None, self.period]
     }
 }
 
@@ -494,7 +563,8 @@ mod tests {
         let d = prof.curve.eval(prof.range()[0], false).d1;
         assert!(d.y.abs() < 1e-12 * d.length(), "{d}");
         let g = input.grid(&prof).unwrap();
-        assert_eq!(g.rings.len(), 15);
+        // 17 samples; each pole's grid cap (k = 8: depth 2) replaces the pole and 1 ring.
+        assert_eq!(g.rings.len(), 13);
         assert!(g.rings.iter().all(|r| r.len() == 32));
         let worst = g
             .rings

@@ -34,9 +34,10 @@ use glam::DVec3;
 use serde::Deserialize;
 
 use super::frames::FrameKind;
-use super::mesh::grid_mesh;
+use super::mesh::{grid_mesh, grid_mesh_coords};
 use super::profile::SweptProfile;
 use super::trajectory::{Trajectory, TrajectorySample};
+use crate::construct::design::{parts_lattice, Design, DesignLattice};
 use crate::construct::profile::input::{
     check_crease_sharpness, default_crease_sharpness, deserialize_sharpness,
 };
@@ -301,10 +302,104 @@ fn check_no_fold(i: usize, t: &TrajectorySample, ring: &[DVec3]) -> Result<()> {
     Ok(())
 }
 
+/// Most sample intervals of the design grid per interval of the sweep's grid (each way);
+/// fewer when the finer grid would pass the sample limits.
+pub const DESIGN_REFINEMENT: usize = 8;
+
 impl SweepInput {
     /// Quad mesh parts of the sweep, each vertex at its data point (the fitter's input).
     pub fn mesh_parts(&self) -> Result<MeshParts> {
         grid_mesh(&self.grid()?, &|_, _| DVec3::ZERO)
+    }
+
+    /// [`SweepInput::mesh_parts`] and the design surface on every face's lattice
+    /// ([`crate::construct::design`]). A sweep's frames exist only at trajectory samples,
+    /// so its design surface is the same sweep sampled up to [`DESIGN_REFINEMENT`] times
+    /// more densely each way, bilinear between those samples (the data points are every
+    /// `r`-th of the finer grid's where the runs between corners split evenly; the
+    /// report's distance shows where they do not).
+    pub fn cage(&self) -> Result<(MeshParts, DesignLattice)> {
+        let grid = self.grid()?;
+        let (parts, coords) = grid_mesh_coords(&grid, &|_, _| DVec3::ZERO)?;
+        let r = [DESIGN_REFINEMENT, 4, 2, 1]
+            .into_iter()
+            .find(|&r| sample_counts_ok(self.samples_profile * r, self.samples_trajectory * r, 1))
+            .unwrap_or(1);
+        let mut fine = self.clone();
+        fine.samples_profile *= r;
+        fine.samples_trajectory *= r;
+        let fine = fine.grid()?;
+        let intervals = |n: usize, closed: bool| (if closed { n } else { n - 1 }).max(1) as f64;
+        let scale = [
+            intervals(fine.rings.len(), fine.rings_closed)
+                / intervals(grid.rings.len(), grid.rings_closed),
+            intervals(fine.rings[0].len(), fine.ring_closed)
+                / intervals(grid.rings[0].len(), grid.ring_closed),
+        ];
+        let design = GridDesign {
+            grid: fine,
+            scale,
+            coarse: [grid.rings.len(), grid.rings[0].len()],
+        };
+        let lattice = parts_lattice(&parts, &coords, &design);
+        Ok((parts, lattice))
+    }
+}
+
+/// A sweep's design surface: a finer sample grid of it, bilinear between samples.
+struct GridDesign {
+    grid: SweepGrid,
+    /// Finer intervals per coarse interval: along the sweep, along the profile.
+    scale: [f64; 2],
+    /// Coarse rings and points per ring (the periods of closed curves).
+    coarse: [usize; 2],
+}
+
+impl GridDesign {
+    /// Fine grid point at integer indices, wrapping closed curves and clamping open ones.
+    fn at(&self, i: i64, j: i64) -> DVec3 {
+        let (rows, cols) = (
+            self.grid.rings.len() as i64,
+            self.grid.rings[0].len() as i64,
+        );
+        let wrap = |x: i64, n: i64, closed: bool| {
+            if closed {
+                x.rem_euclid(n)
+            } else {
+                x.clamp(0, n - 1)
+            }
+        };
+        let i = wrap(i, rows, self.grid.rings_closed) as usize;
+        let j = wrap(j, cols, self.grid.ring_closed) as usize;
+        self.grid.rings[i][j]
+    }
+}
+
+impl Design for GridDesign {
+    fn side(&self, s: f64, theta: f64) -> DVec3 {
+        let (x, y) = (s * self.scale[0], theta * self.scale[1]);
+        let (i, j) = (x.floor(), y.floor());
+        let (fx, fy) = (x - i, y - j);
+        let (i, j) = (i as i64, j as i64);
+        self.at(i, j) * ((1.0 - fx) * (1.0 - fy))
+            + self.at(i + 1, j) * (fx * (1.0 - fy))
+            + self.at(i + 1, j + 1) * (fx * fy)
+            + self.at(i, j + 1) * ((1.0 - fx) * fy)
+    }
+
+    fn angle(&self, theta: f64) -> f64 {
+        theta
+    }
+
+    fn cap(&self, _end: usize, _rho: f64, _theta: f64) -> DVec3 {
+        unreachable!("sweeps have no caps")
+    }
+
+    fn periods(&self) -> [Option<f64>; 2] {
+        [
+            self.grid.rings_closed.then_some(self.coarse[0] as f64),
+            self.grid.ring_closed.then_some(self.coarse[1] as f64),
+        ]
     }
 }
 

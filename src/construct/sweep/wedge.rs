@@ -44,9 +44,10 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 
-use super::mesh::grid_mesh;
+use super::mesh::grid_mesh_coords;
 use super::revolve::{cap_point, revolve_point, RevolveInput, RevolvedProfile};
 use super::sweep::{GridEnd, SweepGrid};
+use crate::construct::design::DesignCoord;
 use crate::construct::profile::Caps;
 use crate::error::{Error, Result};
 use crate::mesh::{Corner, Crease, MeshParts, SHARPNESS_INFINITE};
@@ -68,6 +69,8 @@ struct Sector {
 /// The wedge under construction: the side's parts plus caps.
 struct Wedge {
     parts: MeshParts,
+    /// The design coordinates of the vertices so far.
+    coords: Vec<DesignCoord>,
     /// Directed edges of the faces so far (to orient new patches).
     directed: HashSet<(u32, u32)>,
     /// Crease edges so far, as (min, max).
@@ -118,7 +121,7 @@ fn uniform(count: usize) -> Vec<f64> {
 }
 
 impl Wedge {
-    fn new(parts: MeshParts) -> Wedge {
+    fn new((parts, coords): (MeshParts, Vec<DesignCoord>)) -> Wedge {
         let mut directed = HashSet::new();
         for f in parts.face_indices.chunks_exact(4) {
             for i in 0..4 {
@@ -137,12 +140,14 @@ impl Wedge {
             .collect();
         Wedge {
             parts,
+            coords,
             directed,
             creased,
         }
     }
 
-    fn add_vertex(&mut self, p: DVec3) -> u32 {
+    fn add_vertex(&mut self, p: DVec3, coord: DesignCoord) -> u32 {
+        self.coords.push(coord);
         self.parts.positions.push(p);
         self.parts.positions.len() as u32 - 1
     }
@@ -181,17 +186,22 @@ impl Wedge {
     /// layout; `place(ρ, θ)` gives the data point at relative radius ρ and angle θ.
     fn sector(
         &mut self,
+        end: usize,
         ring: &[u32],
         angle: f64,
         place: &dyn Fn(f64, f64) -> DVec3,
         creased: bool,
     ) -> Sector {
         let k = (ring.len() - 1) / 4;
-        let apex = self.add_vertex(place(0.0, 0.0));
+        let at = |rho: f64, theta: f64| DesignCoord::Cap { end, rho, theta };
+        let apex = self.add_vertex(place(0.0, 0.0), at(0.0, 0.0));
         // A radial line at θ from the apex to ring vertex `end`.
         let radial = |w: &mut Wedge, theta: f64, end: u32| -> Vec<u32> {
             let mut ids = vec![apex];
-            ids.extend((1..k).map(|j| w.add_vertex(place(j as f64 / k as f64, theta))));
+            ids.extend((1..k).map(|j| {
+                let rho = j as f64 / k as f64;
+                w.add_vertex(place(rho, theta), at(rho, theta))
+            }));
             ids.push(end);
             ids
         };
@@ -228,7 +238,7 @@ impl Wedge {
                         let q = inner[i][j];
                         let theta = q.y.atan2(q.x);
                         let theta = if h == 0 { theta } else { angle - theta };
-                        self.add_vertex(place(q.length(), theta))
+                        self.add_vertex(place(q.length(), theta), at(q.length(), theta))
                     };
                 }
             }
@@ -292,7 +302,7 @@ impl Wedge {
                     .map(|(j, p)| match j {
                         0 => bottom[0],
                         j if j == grid[0].len() - 1 => top[0],
-                        _ => self.add_vertex(DVec3::new(0.0, 0.0, p.y)),
+                        _ => self.add_vertex(DVec3::new(0.0, 0.0, p.y), DesignCoord::Planar),
                     })
                     .collect();
                 *shared = Some((a, axis));
@@ -322,7 +332,7 @@ impl Wedge {
                 } else if i == n1 {
                     column[a + j]
                 } else {
-                    self.add_vertex(revolve_point(grid[i][j], theta))
+                    self.add_vertex(revolve_point(grid[i][j], theta), DesignCoord::Planar)
                 };
             }
         }
@@ -332,7 +342,7 @@ impl Wedge {
 
     /// Tag every vertex with three or more crease edges (and each of `extra`) as an
     /// infinitely sharp corner, then return the parts.
-    fn finish(mut self, extra: &[u32]) -> MeshParts {
+    fn finish(mut self, extra: &[u32]) -> (MeshParts, Vec<DesignCoord>) {
         let mut count = vec![0usize; self.parts.positions.len()];
         for c in &self.parts.creases {
             for v in c.vertices {
@@ -353,7 +363,7 @@ impl Wedge {
                 sharpness: SHARPNESS_INFINITE,
             })
             .collect();
-        self.parts
+        (self.parts, self.coords)
     }
 }
 
@@ -497,7 +507,8 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 
 /// The mesh parts of a partial revolution: the side from `grid` (rings of
 /// `samples_around + 1` data points, `ring_s` their profile parameters), sectors at poles and
-/// (with caps) at flat ends, and meridian caps. See the module documentation.
+/// (with caps) at flat ends, and meridian caps (see the module documentation); and the
+/// vertices' design coordinates (sectors as caps, meridian caps planar).
 ///
 /// Errors ([`Error::InvalidArgument`]): caps with fewer than 2 rings, ends at one height, or
 /// a folding meridian cap.
@@ -506,7 +517,7 @@ pub fn wedge_parts(
     profile: &RevolvedProfile,
     grid: &SweepGrid,
     ring_s: &[f64],
-) -> Result<MeshParts> {
+) -> Result<(MeshParts, Vec<DesignCoord>)> {
     let capped = input.caps == Caps::Flat;
     let rows = grid.rings.len();
     if capped && rows < 2 {
@@ -521,7 +532,7 @@ pub fn wedge_parts(
         ..grid.clone()
     };
     // No grid caps: the side's ends are open.
-    let mut w = Wedge::new(grid_mesh(&side, &|_, _| DVec3::NAN)?);
+    let mut w = Wedge::new(grid_mesh_coords(&side, &|_, _| DVec3::NAN)?);
     let angle = input.angle_deg.to_radians();
     let cols = input.samples_around + 1;
     let ring_ids =
@@ -536,13 +547,13 @@ pub fn wedge_parts(
             GridEnd::Flat => {
                 let p = profile.point(s);
                 let flat = |rho: f64, theta: f64| revolve_point(DVec2::new(rho * p.x, p.y), theta);
-                w.sector(&ring_ids(i), angle, &flat, true)
+                w.sector(end, &ring_ids(i), angle, &flat, true)
             }
             GridEnd::Smooth | GridEnd::Tip(_) => {
                 let pole = profile.range()[end];
                 let on_surface =
                     |rho: f64, theta: f64| cap_point(profile, s, pole, rho, theta / TAU);
-                let sector = w.sector(&ring_ids(i), angle, &on_surface, false);
+                let sector = w.sector(end, &ring_ids(i), angle, &on_surface, false);
                 tips.push(sector.apex);
                 sector
             }

@@ -1,0 +1,175 @@
+//! Valid surfaces (issue #10): the fitted limit surfaces of the examples and of generated
+//! spheres, ellipsoids, flat-based bottles and flat-footed goblets do not fold (the library's
+//! fold check, `eval::folds`), stay close to their design surfaces between the data points
+//! and are about as fair as them (`construct::design`).
+
+use std::f64::consts::PI;
+use std::path::PathBuf;
+
+use profsubd::cli::profile::read_input;
+use profsubd::construct::design::SurfaceReport;
+use profsubd::construct::profile::{build, shapes::ellipsoid, ProfileInput};
+use profsubd::construct::sweep::revolve::RevolveInput;
+use profsubd::construct::sweep::sweep::SweepInput;
+use profsubd::construct::sweep::{revolve, sweep};
+
+/// Samplings from 16 × 8 to 128 × 64 (around × along).
+const SAMPLINGS: [(usize, usize); 4] = [(16, 8), (32, 16), (64, 32), (128, 64)];
+
+fn example(dir: &str, name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("examples/{dir}/{name}.json"))
+}
+
+fn assert_valid(name: &str, r: &SurfaceReport, max_distance: f64) {
+    println!(
+        "{name}: folded {} (worst reversal {:.1}°), design distance max {:.2e} mean {:.2e}, \
+         undulation {:.3}",
+        r.folded_faces,
+        r.worst_reversal_deg,
+        r.max_design_distance,
+        r.mean_design_distance,
+        r.undulation
+    );
+    assert_eq!(r.folded_faces, 0, "{name}: {r:?}");
+    assert!(r.worst_reversal_deg < 90.0, "{name}: {r:?}");
+    assert!(r.max_design_distance < max_distance, "{name}: {r:?}");
+    assert!(r.mean_design_distance < 0.1 * max_distance, "{name}: {r:?}");
+}
+
+#[test]
+fn examples_do_not_fold_and_follow_their_design() {
+    for name in ["bottle", "vase", "mouse", "spinning_top"] {
+        let model = build(&read_input(Some(&example("profiles", name))).unwrap()).unwrap();
+        let r = model.surface_report().unwrap();
+        assert_valid(name, r, 3e-3);
+        assert!((0.9..1.1).contains(&r.undulation), "{name}: {r:?}");
+    }
+    let path = example("sweeps", "wine_glass");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let glass = revolve(&RevolveInput::from_json(&text, &path).unwrap()).unwrap();
+    let r = glass.surface_report().unwrap();
+    assert_valid("wine_glass", r, 1e-3);
+    assert!((0.9..1.1).contains(&r.undulation), "{r:?}");
+    for name in ["handrail", "torus_knot_tube"] {
+        let path = example("sweeps", name);
+        let text = std::fs::read_to_string(&path).unwrap();
+        let s = sweep(&SweepInput::from_json(&text, &path).unwrap()).unwrap();
+        assert_valid(name, s.surface_report().unwrap(), 5e-3);
+    }
+}
+
+#[test]
+fn ellipsoids_of_several_aspect_ratios_do_not_fold() {
+    for (a, b, c) in [
+        (1.0, 1.0, 1.0),
+        (2.0, 1.0, 1.5),
+        (3.0, 2.0, 0.75),
+        (1.0, 1.0, 5.0),
+    ] {
+        let mut previous = f64::INFINITY;
+        for (around, along) in SAMPLINGS {
+            let mut input = ellipsoid(a, b, c, 400);
+            input.around = around as u32;
+            input.along = along as u32;
+            let model = build(&input).unwrap();
+            let r = model.surface_report().unwrap();
+            assert_valid(
+                &format!("ellipsoid ({a}, {b}, {c}) {around}x{along}"),
+                r,
+                5e-3,
+            );
+            if around == 32 {
+                assert!(r.max_design_distance < 1e-3, "{r:?}");
+            }
+            assert!(r.max_design_distance < previous, "{r:?}");
+            previous = r.max_design_distance;
+        }
+    }
+}
+
+#[test]
+fn spheres_and_goblets_by_revolution_do_not_fold() {
+    let semicircle: Vec<[f64; 2]> = (0..=48)
+        .map(|i| {
+            let t = -PI / 2.0 + PI * i as f64 / 48.0;
+            [if i == 0 || i == 48 { 0.0 } else { t.cos() }, t.sin()]
+        })
+        .collect();
+    // A goblet with a wide flat foot (a smooth pole at its centre), a thin stem and a bowl.
+    let goblet = vec![
+        [0.0, 0.0],
+        [3.0, 0.0],
+        [3.05, 0.08],
+        [0.4, 0.25],
+        [0.12, 0.6],
+        [0.1, 2.5],
+        [0.3, 3.2],
+        [1.4, 3.8],
+        [2.0, 5.0],
+        [2.1, 6.0],
+        [0.0, 5.9],
+    ];
+    for (name, profile) in [("sphere", semicircle), ("goblet", goblet)] {
+        for (around, along) in SAMPLINGS {
+            let mut input = RevolveInput::new(profile.clone());
+            input.samples_around = around;
+            input.samples_profile = along * if name == "goblet" { 2 } else { 1 };
+            let s = revolve(&input).unwrap();
+            let r = s.surface_report().unwrap();
+            assert_valid(&format!("{name} {around}x{along}"), r, 5e-3);
+        }
+    }
+}
+
+#[test]
+fn bottles_with_flat_bases_do_not_fold() {
+    let input = read_input(Some(&example("profiles", "bottle"))).unwrap();
+    for (around, along) in SAMPLINGS {
+        let mut bottle: ProfileInput = input.clone();
+        bottle.around = around as u32;
+        bottle.along = along as u32 + 8;
+        let model = build(&bottle).unwrap();
+        assert_valid(
+            &format!("bottle {around}x{}", along + 8),
+            model.surface_report().unwrap(),
+            5e-3,
+        );
+    }
+}
+
+#[test]
+fn random_full_turn_revolutions_do_not_fold() {
+    // The generator of `sweep_wedge`'s random-profile test, full turns only, fitted: every
+    // profile that is accepted gives a limit surface without folds.
+    let mut seed: u64 = 12345;
+    let mut rnd = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed % 1_000_000) as f64 / 1_000_000.0
+    };
+    let mut built = 0;
+    for _ in 0..60 {
+        let n = 2 + (rnd() * 6.0) as usize;
+        let mut pts: Vec<[f64; 2]> = (0..n)
+            .map(|i| [0.2 + 2.0 * rnd(), i as f64 + 0.8 * rnd()])
+            .collect();
+        if rnd() < 0.4 {
+            pts[0][0] = 0.0;
+        }
+        if rnd() < 0.4 {
+            pts[n - 1][0] = 0.0;
+        }
+        let mut input = RevolveInput::new(pts);
+        if rnd() < 0.5 {
+            input.caps = profsubd::construct::profile::Caps::Flat;
+        }
+        input.samples_around = 4 * (2 + (rnd() * 6.0) as usize);
+        input.samples_profile = 4 + (rnd() * 28.0) as usize;
+        let Ok(s) = revolve(&input) else { continue };
+        let r = s.surface_report().unwrap();
+        assert_eq!(r.folded_faces, 0, "{input:?}: {r:?}");
+        built += 1;
+    }
+    assert!(built > 30, "{built}");
+}

@@ -517,6 +517,67 @@ void check_threads(Checker &ck, const TempDir &tmp) {
     ck.check(ok[0] + ok[1] + ok[2] + ok[3] == 800, "4 threads reading one mesh all succeed");
 }
 
+// profsubd_mesh_get_osd_hazard_vertices / _faces on a cube with one infinitely sharp edge
+// 1-5: both ends are darts (interior, one sharp edge), their faces are 0-3.
+void check_osd_hazards(Checker &ck) {
+    ck.set_context("osd hazards");
+    double positions[24] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+    uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
+    uint32_t indices[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+    uint32_t crease[2] = {1, 5};
+    float sharpness[1] = {10.0f};
+    profsubd_mesh_desc d;
+    std::memset(&d, 0, sizeof d);
+    d.struct_size = sizeof d;
+    d.positions = positions;
+    d.num_vertices = 8;
+    d.face_sizes = sizes;
+    d.num_faces = 6;
+    d.face_indices = indices;
+    d.num_face_indices = 24;
+    d.crease_vertices = crease;
+    d.crease_sharpness = sharpness;
+    d.num_creases = 1;
+    profsubd_mesh *raw = nullptr;
+    if (!ck.equal(int(profsubd_mesh_new(&d, &raw)), int(PROFSUBD_OK), "cube with a dart edge")) return;
+    MeshPtr m(raw);
+    auto real = [&](const profsubd_mesh *p) { return p == kNoMesh ? m.get() : p; };
+    check_copy_out<uint32_t>(ck, "get_osd_hazard_vertices", 2, 1,
+                             [&](const profsubd_mesh *p, uint32_t *o, size_t c, size_t *n) {
+                                 return profsubd_mesh_get_osd_hazard_vertices(real(p), nullptr,
+                                                                              PROFSUBD_OSD_HAZARD_DART, o, c, n);
+                             });
+    check_copy_out<uint32_t>(ck, "get_osd_hazard_faces", 4, 1,
+                             [&](const profsubd_mesh *p, uint32_t *o, size_t c, size_t *n) {
+                                 return profsubd_mesh_get_osd_hazard_faces(real(p), nullptr,
+                                                                           PROFSUBD_OSD_HAZARD_DART, o, c, n);
+                             });
+    uint32_t out[8] = {77, 77, 77, 77, 77, 77, 77, 77};
+    size_t n = 999;
+    ck.equal(int(profsubd_mesh_get_osd_hazard_vertices(m.get(), nullptr, PROFSUBD_OSD_HAZARD_DART, out, 8, &n)),
+             int(PROFSUBD_OK), "dart vertices");
+    ck.check(n == 2 && out[0] == 1 && out[1] == 5, "dart vertices are 1 and 5");
+    ck.equal(int(profsubd_mesh_get_osd_hazard_faces(m.get(), nullptr, PROFSUBD_OSD_HAZARD_DART, out, 8, &n)),
+             int(PROFSUBD_OK), "dart faces");
+    ck.check(n == 4 && out[0] == 0 && out[1] == 1 && out[2] == 2 && out[3] == 3, "dart faces are 0-3");
+    ck.equal(int(profsubd_mesh_get_osd_hazard_vertices(m.get(), nullptr, PROFSUBD_OSD_HAZARD_CHAIKIN, out, 8, &n)),
+             int(PROFSUBD_OK), "no Chaikin hazard");
+    ck.equal(n, size_t(0), "no Chaikin hazard: *needed = 0");
+    std::fill(std::begin(out), std::end(out), 77);
+    n = 999;
+    for (int32_t kind : {-1, 7}) {
+        expect(ck, profsubd_mesh_get_osd_hazard_vertices(m.get(), nullptr, kind, out, 8, &n),
+               PROFSUBD_ERROR_INVALID_ARGUMENT, {"hazard kind", std::to_string(kind)}, "kind out of range");
+        expect(ck, profsubd_mesh_get_osd_hazard_faces(m.get(), nullptr, kind, out, 8, &n),
+               PROFSUBD_ERROR_INVALID_ARGUMENT, {"hazard kind"}, "kind out of range (faces)");
+    }
+    const auto *wrong = reinterpret_cast<const profsubd_options *>(m.get());
+    expect(ck, profsubd_mesh_get_osd_hazard_vertices(m.get(), wrong, PROFSUBD_OSD_HAZARD_DART, out, 8, &n),
+           PROFSUBD_ERROR_INVALID_HANDLE, {"options"}, "a mesh passed as options");
+    ck.check(n == 999 && std::all_of(std::begin(out), std::end(out), [](uint32_t x) { return x == 77; }),
+             "failed calls leave the outputs alone");
+}
+
 }  // namespace
 
 int main() {
@@ -525,6 +586,7 @@ int main() {
     check_mesh_new(ck);
     check_read_write(ck, tmp);
     check_queries(ck);
+    check_osd_hazards(ck);
     check_handles(ck);
     check_options(ck);
     check_refine(ck);

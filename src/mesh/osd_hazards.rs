@@ -56,6 +56,19 @@ pub enum HazardKind {
 }
 
 impl HazardKind {
+    /// Every kind, in order.
+    pub fn all() -> [HazardKind; 7] {
+        [
+            HazardKind::Dart,
+            HazardKind::Valence2Dart,
+            HazardKind::Valence2Sharp,
+            HazardKind::Valence2,
+            HazardKind::Chaikin,
+            HazardKind::RepeatedVertex,
+            HazardKind::PrimvarLimit,
+        ]
+    }
+
     /// The snake_case name used in the `check` output.
     pub fn name(self) -> &'static str {
         match self {
@@ -149,7 +162,7 @@ pub struct Hazard {
 pub fn osd_hazards(mesh: &Mesh, options: &SubdivOptions) -> Vec<Hazard> {
     let level = Level::from_mesh_with_options(mesh, options);
     let nv = level.num_vertices();
-    let mut marked: Vec<Vec<bool>> = vec![vec![false; nv]; 7];
+    let mut marked: Vec<Vec<bool>> = vec![vec![false; nv]; HazardKind::all().len()];
     let index = |k: HazardKind| k as usize;
     let mut repeated_faces = Vec::new();
     for f in 0..level.num_faces() {
@@ -170,17 +183,8 @@ pub fn osd_hazards(mesh: &Mesh, options: &SubdivOptions) -> Vec<Hazard> {
             marked[index(kind)][v] = true;
         }
     }
-    let kinds = [
-        HazardKind::Dart,
-        HazardKind::Valence2Dart,
-        HazardKind::Valence2Sharp,
-        HazardKind::Valence2,
-        HazardKind::Chaikin,
-        HazardKind::RepeatedVertex,
-        HazardKind::PrimvarLimit,
-    ];
     let mut out = Vec::new();
-    for kind in kinds {
+    for kind in HazardKind::all() {
         let at = &marked[index(kind)];
         let vertices: Vec<u32> = (0..nv).filter(|&v| at[v]).map(|v| v as u32).collect();
         if vertices.is_empty() {
@@ -296,11 +300,7 @@ fn semi_sharp_neighbours(level: &Level, marked: &[bool]) -> Vec<bool> {
 fn faces_touching(level: &Level, marked: &[bool]) -> Vec<u32> {
     (0..level.num_faces())
         .filter(|&f| {
-            !level.is_face_hole(f)
-                && level
-                    .face_vertices(f)
-                    .iter()
-                    .any(|&x| marked[x as usize])
+            !level.is_face_hole(f) && level.face_vertices(f).iter().any(|&x| marked[x as usize])
         })
         .map(|f| f as u32)
         .collect()

@@ -36,10 +36,10 @@ struct OsdPatches::Impl {
 OsdPatches::OsdPatches(const Far::TopologyRefiner &refiner, const Far::PatchTable &table,
                        const std::vector<double> &positions)
     : impl_(new Impl) {
-    // The refined points, level by level (each level's stencils read the previous level's
-    // points, so they are applied in order: a factorized table, every point from the control
-    // points, takes minutes around catmark_pole360's valence-360 vertex), then the local
-    // points (end caps) from the refined ones, with the PatchTable's own stencils.
+    // The refined points level by level (a factorized table, every point from the control
+    // points, takes minutes to build around catmark_pole360's valence-360 vertex; Osd takes
+    // either), then the local points (end caps) from the refined ones with the PatchTable's
+    // own stencils, as StencilTableFactory::AppendLocalPointStencilTable would splice them.
     Far::StencilTableFactory::Options so;
     so.generateOffsets = true;
     so.generateIntermediateLevels = true;  // the patches index every level's points
@@ -52,9 +52,16 @@ OsdPatches::OsdPatches(const Far::TopologyRefiner &refiner, const Far::PatchTabl
     std::vector<float> coarse(positions.begin(), positions.end());
     impl_->points->UpdateData(coarse.data(), 0, ncoarse);
     Osd::BufferDescriptor all(0, 3, 3);
-    if (nrefined > 0) {
-        Osd::BufferDescriptor dst(3 * ncoarse, 3, 3);
-        Osd::CpuEvaluator::EvalStencils(impl_->points.get(), all, impl_->points.get(), dst, refined.get());
+    // Level k's stencils index level k-1's points from 0.
+    float *buffer = impl_->points->BindCpuBuffer();
+    for (int k = 1, first = 0, src = 0, dst = ncoarse; k <= refiner.GetMaxLevel(); ++k) {
+        const int n = refiner.GetLevel(k).GetNumVertices();
+        Osd::BufferDescriptor from(3 * src, 3, 3), to(3 * dst, 3, 3);
+        Osd::CpuEvaluator::EvalStencils(buffer, from, buffer, to, &refined->GetSizes()[0], &refined->GetOffsets()[0],
+                                        &refined->GetControlIndices()[0], &refined->GetWeights()[0], first, first + n);
+        first += n;
+        src = dst;
+        dst += n;
     }
     if (nlocal > 0) {
         Osd::BufferDescriptor dst(3 * (ncoarse + nrefined), 3, 3);

@@ -16,9 +16,11 @@ fn profsubd(args: &[&str]) -> Output {
         .expect("run profsubd")
 }
 
-/// `check --json` on `path` with `flags`: exit code and the `osd_hazards` array as
-/// `(kind, vertices, faces)`.
-fn hazards(path: &Path, flags: &[&str]) -> (i32, Vec<(String, Vec<u32>, Vec<u32>)>) {
+/// One entry of `osd_hazards`: kind, vertices, faces.
+type Found = (String, Vec<u32>, Vec<u32>);
+
+/// `check --json` on `path` with `flags`: exit code and the `osd_hazards` array.
+fn hazards(path: &Path, flags: &[&str]) -> (i32, Vec<Found>) {
     let mut args = vec!["check", "--json", path.to_str().unwrap()];
     args.extend_from_slice(flags);
     let o = profsubd(&args);
@@ -47,7 +49,7 @@ fn hazards(path: &Path, flags: &[&str]) -> (i32, Vec<(String, Vec<u32>, Vec<u32>
     (o.status.code().unwrap(), found)
 }
 
-fn kinds(found: &[(String, Vec<u32>, Vec<u32>)]) -> Vec<&str> {
+fn kinds(found: &[Found]) -> Vec<&str> {
     found.iter().map(|(k, _, _)| k.as_str()).collect()
 }
 

@@ -209,7 +209,7 @@ pub fn json_report(
     value
 }
 
-/// OpenSubdiv 3.5 hazards ([`crate::mesh::osd_hazards`]): warnings, no effect on the exit code.
+/// OpenSubdiv 3.5 hazards ([`crate::mesh::osd_hazards()`]): warnings, no effect on the exit code.
 mod hazards {
     use super::{count_and_list, SubdivFlags};
     use crate::mesh::{osd_hazards, Hazard, Mesh};

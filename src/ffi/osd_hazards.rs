@@ -1,4 +1,4 @@
-//! Where OpenSubdiv 3.5 is not exact or not safe on a mesh ([`crate::mesh::osd_hazards`]):
+//! Where OpenSubdiv 3.5 is not exact or not safe on a mesh ([`crate::mesh::osd_hazards()`]):
 //! the vertices and faces of each hazard kind.
 
 use crate::ffi::error::FfiError;

@@ -88,7 +88,7 @@ impl HazardKind {
             HazardKind::Dart => &["Bfr", "Far::PatchTable", "Osd"],
             HazardKind::Valence2Dart => &["Bfr", "Far::PatchTable", "Osd"],
             HazardKind::Valence2Sharp | HazardKind::Valence2 | HazardKind::Chaikin => &["Bfr"],
-            HazardKind::RepeatedVertex => &["Bfr"],
+            HazardKind::RepeatedVertex => &["Bfr", "Far::PatchTable", "Osd"],
             HazardKind::PrimvarLimit => &["Far::PrimvarRefiner::Limit"],
         }
     }
@@ -99,38 +99,47 @@ impl HazardKind {
         match self {
             HazardKind::Dart => {
                 "Bfr, Far's PatchTable and Osd use the smooth limit mask at their last isolation \
-                 level (at most 10): not exact at the vertex and within ~2^-10 of it in (u, v) on \
-                 these faces; MEASURE"
+                 level (at most 10): not exact at the vertex and within ~2^-level of it in (u, v) \
+                 on these faces; at isolation 10 the PatchTable is off by up to 7.4e-6 x diagonal \
+                 at the vertex and 2.2e-5 at 2^-12 from it, exact (3e-16) at 2^-8 from it, \
+                 falling ~0.3x per two levels (ctest conformance_eval); Bfr up to 7.4e-6 at the \
+                 vertex (ctest conformance_limit_vertices)"
             }
             HazardKind::Valence2Dart => {
                 "3.5's Far::SourcePatch miscounts the ring and writes one element past an array: \
                  Bfr corrupts the heap (crash) on these faces, Far's PatchTable and Osd get wrong \
-                 patch points silently (unchanged in 3.6.0; ctest conformance_limit_vertices \
-                 keeps such faces from Bfr)"
+                 patch points silently (unchanged in 3.6.0; OpenSubdiv shapes README; the \
+                 conformance suite keeps such faces from Bfr and from its PatchTable checks)"
             }
             HazardKind::Valence2Sharp => {
-                "3.5's Bfr is wrong or crashes on these faces (fixed in 3.6.0, whose \
-                 catmark_val2_interior adds this case); Far's PatchTable is exact (ctest \
-                 conformance_eval keeps them from Bfr)"
+                "not safe for 3.5's Bfr: it is wrong or crashes on 2 faces of 3.6.0's \
+                 catmark_val2_interior (semi-sharp creases next to valence-2 vertices; fixed in \
+                 3.6.0; OpenSubdiv shapes README); the conformance suite keeps faces this close to such vertices (sharp \
+                 edges, boundary edges included, or sharp vertices in their faces) from 3.5's Bfr"
             }
             HazardKind::Valence2 => {
                 "Bfr's topology cache can hand a face with this corner another face's patch \
-                 (0.03-0.17 x diagonal off; build these faces without the cache)"
+                 (0.03-0.17 x diagonal off, OpenSubdiv shapes README); build these faces without \
+                 the cache, as ctest conformance_eval does"
             }
             HazardKind::Chaikin => {
-                "under Chaikin creasing Bfr disagrees with refinement on these faces (up to \
-                 3.4e-3 x diagonal, catmark_cube_creases1, ctest conformance_eval); Far's \
-                 PatchTable and Osd are exact there"
+                "under Chaikin creasing Bfr disagrees with Far's PatchTable, which is exact there, \
+                 on these faces: up to 1.2e-3 x diagonal (catmark_cube_creases1), and only on \
+                 faces listed here (ctest conformance_eval checks both); Osd evaluates the \
+                 PatchTable's patches"
             }
             HazardKind::RepeatedVertex => {
-                "OpenSubdiv makes the vertex non-manifold (sharp); Bfr has no surface on some \
-                 faces through it (ctest conformance_eval counts the points it declines)"
+                "OpenSubdiv makes the vertex non-manifold (sharp) and the doubled edge two edges; \
+                 within 2^-2 of it on these faces no reference has shown Bfr or the PatchTable \
+                 exact (profsubd's evaluator is not exact there either); farther out Bfr, the \
+                 PatchTable and profsubd agree to 1e-12 x diagonal, and Bfr declines none of the \
+                 446 such faces of the shapes (ctest conformance_eval)"
             }
             HazardKind::PrimvarLimit => {
                 "PrimvarRefiner::Limit applies the level-0 mask: the smooth mask at darts, the \
                  corner mask at interior valence-2 vertices, the sharp masks before semi-sharp \
-                 features decay (up to 0.13 x diagonal off); Bfr, the PatchTable or profsubd's \
-                 limit stencils give the limit"
+                 features decay (up to 0.13 x diagonal off, OpenSubdiv shapes README); Bfr, the \
+                 PatchTable or profsubd's limit stencils give the limit"
             }
         }
     }
@@ -162,15 +171,14 @@ pub struct Hazard {
 pub fn osd_hazards(mesh: &Mesh, options: &SubdivOptions) -> Vec<Hazard> {
     let level = Level::from_mesh_with_options(mesh, options);
     let nv = level.num_vertices();
-    let mut marked: Vec<Vec<bool>> = vec![vec![false; nv]; HazardKind::all().len()];
-    let index = |k: HazardKind| k as usize;
+    let mut repeated = vec![false; nv];
     let mut repeated_faces = Vec::new();
     for f in 0..level.num_faces() {
         let verts = level.face_vertices(f);
         let mut repeats = false;
         for i in 1..verts.len() {
             if verts[..i].contains(&verts[i]) {
-                marked[index(HazardKind::RepeatedVertex)][verts[i] as usize] = true;
+                repeated[verts[i] as usize] = true;
                 repeats = true;
             }
         }
@@ -178,14 +186,15 @@ pub fn osd_hazards(mesh: &Mesh, options: &SubdivOptions) -> Vec<Hazard> {
             repeated_faces.push(f as u32);
         }
     }
-    for v in 0..nv {
-        for kind in vertex_kinds(&level, v) {
-            marked[index(kind)][v] = true;
-        }
-    }
+    let kinds: Vec<Vec<HazardKind>> = (0..nv).map(|v| vertex_kinds(&level, v)).collect();
     let mut out = Vec::new();
     for kind in HazardKind::all() {
-        let at = &marked[index(kind)];
+        let at: Vec<bool> = if kind == HazardKind::RepeatedVertex {
+            repeated.clone()
+        } else {
+            kinds.iter().map(|k| k.contains(&kind)).collect()
+        };
+        let at = &at;
         let vertices: Vec<u32> = (0..nv).filter(|&v| at[v]).map(|v| v as u32).collect();
         if vertices.is_empty() {
             continue;

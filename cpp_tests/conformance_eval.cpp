@@ -508,16 +508,21 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
         if (!c_.check(has_far == has_osd, where.str() + ": PatchMap and Osd disagree on a patch")) return;
         if (!has_far) return;
         ++fig_.osd_points;
-        double e = norm(os.p - far.p) / mag;
-        if (e > fig_.osd_far_pos) {
-            fig_.osd_far_pos = e;
-            fig_.osd_far_where = where.str();
-        }
-        c_.check(e <= kOsdPosTol, where.str() + ": Osd " + str(os.p) + " vs Far's PatchTable " + str(far.p));
-        double r = std::max(norm(os.du - far.du), norm(os.dv - far.dv)) / (scale * mag);
-        fig_.osd_far_deriv = std::max(fig_.osd_far_deriv, r);
-        c_.check(r <= kOsdDerivTol, where.str() + ": Osd du, dv " + str(os.du) + " " + str(os.dv) +
-                                         " vs Far's PatchTable " + str(far.du) + " " + str(far.dv));
+        // Osd against `ref` (named `what`) within the float tolerances; worst figures kept.
+        auto check_osd = [&](const Sample &ref, const std::string &what, double *pos, std::string *pos_where,
+                             double *deriv) {
+            double e = norm(os.p - ref.p) / mag;
+            if (e > *pos) {
+                *pos = e;
+                *pos_where = where.str();
+            }
+            c_.check(e <= kOsdPosTol, where.str() + ": Osd " + str(os.p) + " vs " + what + " " + str(ref.p));
+            double r = std::max(norm(os.du - ref.du), norm(os.dv - ref.dv)) / (scale * mag);
+            *deriv = std::max(*deriv, r);
+            c_.check(r <= kOsdDerivTol, where.str() + ": Osd du, dv " + str(os.du) + " " + str(os.dv) + " vs " + what +
+                                             " " + str(ref.du) + " " + str(ref.dv));
+        };
+        check_osd(far, "Far's PatchTable", &fig_.osd_far_pos, &fig_.osd_far_where, &fig_.osd_far_deriv);
         if (!p || at_dart2 || near_irregular(pf, u, v)) return;
         // On a non-quad's sub-face Far's PatchTable (and Osd) give twice the derivative with
         // respect to the sub-face's (u, v) (checked by central differences of the PatchTable's
@@ -530,16 +535,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
             return;
         }
         ++fig_.osd_exact_points;
-        double eo = norm(os.p - ours.p) / mag;
-        if (eo > fig_.osd_pos) {
-            fig_.osd_pos = eo;
-            fig_.osd_where = where.str();
-        }
-        c_.check(eo <= kOsdPosTol, where.str() + ": Osd " + str(os.p) + " vs profsubd " + str(ours.p));
-        double ro = std::max(norm(os.du - ours.du), norm(os.dv - ours.dv)) / (scale * mag);
-        fig_.osd_deriv = std::max(fig_.osd_deriv, ro);
-        c_.check(ro <= kOsdDerivTol, where.str() + ": Osd du, dv " + str(os.du) + " " + str(os.dv) +
-                                          " vs profsubd " + str(ours.du) + " " + str(ours.dv));
+        check_osd(ours, "profsubd", &fig_.osd_pos, &fig_.osd_where, &fig_.osd_deriv);
         double ef = norm(far.p - ours.p) / diag;
         fig_.patch_pos = std::max(fig_.patch_pos, ef);
         c_.check(ef <= 1e-12, where.str() + ": Far's PatchTable " + str(far.p) + " vs profsubd " + str(ours.p));

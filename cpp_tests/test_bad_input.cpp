@@ -521,26 +521,13 @@ void check_threads(Checker &ck, const TempDir &tmp) {
 // 1-5: both ends are darts (interior, one sharp edge), their faces are 0-3.
 void check_osd_hazards(Checker &ck) {
     ck.set_context("osd hazards");
-    double positions[24] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-    uint32_t sizes[6] = {4, 4, 4, 4, 4, 4};
-    uint32_t indices[24] = {0, 3, 2, 1, 4, 5, 6, 7, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
-    uint32_t crease[2] = {1, 5};
-    float sharpness[1] = {10.0f};
-    profsubd_mesh_desc d;
-    std::memset(&d, 0, sizeof d);
-    d.struct_size = sizeof d;
-    d.positions = positions;
-    d.num_vertices = 8;
-    d.face_sizes = sizes;
-    d.num_faces = 6;
-    d.face_indices = indices;
-    d.num_face_indices = 24;
-    d.crease_vertices = crease;
-    d.crease_sharpness = sharpness;
-    d.num_creases = 1;
-    profsubd_mesh *raw = nullptr;
-    if (!ck.equal(int(profsubd_mesh_new(&d, &raw)), int(PROFSUBD_OK), "cube with a dart edge")) return;
-    MeshPtr m(raw);
+    OsdShape cube;
+    std::string err;
+    const char *obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                      "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nt crease 2/1/0 1 5 10\n";
+    if (!ck.check(parse_osd_shape(obj, &cube, &err), "cube: " + err)) return;
+    MeshPtr m = new_mesh_capi(cube, &err);
+    if (!ck.check(m != nullptr, "cube with a dart edge: " + err)) return;
     auto real = [&](const profsubd_mesh *p) { return p == kNoMesh ? m.get() : p; };
     check_copy_out<uint32_t>(ck, "get_osd_hazard_vertices", 2, 1,
                              [&](const profsubd_mesh *p, uint32_t *o, size_t c, size_t *n) {

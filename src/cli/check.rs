@@ -1,4 +1,5 @@
-//! `profsubd check MESH.obj`: counts, valences, boundary, non-manifold findings, tags.
+//! `profsubd check MESH.obj`: counts, valences, boundary, non-manifold findings, tags, and
+//! where OpenSubdiv 3.5 is not exact or not safe (warnings).
 
 use std::collections::BTreeMap;
 use std::fmt::Write;

@@ -27,6 +27,24 @@
 //    near each irregular corner, where the refined vertex is regular and unsharpened (then
 //    the mask is the exact limit). Bfr's deviation at those points and at the skipped points
 //    is printed as a measured figure.
+//  - Far's PatchTable (adaptive, isolation 10, Gregory end caps, inf-sharp patches) and,
+//    over the same patches, Osd as viewers and DCC applications use it (osd_patches.h:
+//    Osd::CpuEvaluator::EvalStencils of the refined and local points into an
+//    Osd::CpuVertexBuffer, Osd::CpuEvaluator::EvalPatches over an Osd::CpuPatchTable), at
+//    every random point and at the dyadic reference points below. OpenSubdiv 3.5's Osd is
+//    single precision, so Osd agrees with Far's PatchTable only up to float rounding (not
+//    to 1e-15): positions within kOsdPosTol x M (M = max(diagonal, largest coordinate)),
+//    derivatives within kOsdDerivTol x M x 2^patch depth. Where the PatchTable is exact
+//    (farther than 2^-9 from irregular corners, no valence-2 dart corner; under both crease
+//    methods) it is a reference like Bfr (1e-12 x diagonal, 1e-9 relative) and Osd is
+//    checked against profsubd with the float tolerances. On a non-quad's sub-face the
+//    PatchTable's and Osd's derivatives are twice those with respect to the sub-face's (u, v)
+//    (as Bfr's in its tiled domain; central differences of the PatchTable's own positions
+//    agree with profsubd's), so profsubd's are doubled there for the comparison.
+//  - Under Chaikin with semi-sharp features, Bfr off the PatchTable is allowed only on the
+//    faces `profsubd check` lists for its Chaikin hazard (profsubd_mesh_get_osd_hazard_faces).
+//  - Darts (dart_isolation): the PatchTable at isolation 2, 4, ..., 10 against the exact limit
+//    at the vertex, at 2^-(level+2) and at 2^-(level-2) from it: measured, printed.
 // Every difference above tolerance fails with shape, configuration, point and both values.
 //
 // Points per configuration: 10^4 for the shape's own tags, 2,000 for each of the other
@@ -35,6 +53,7 @@
 
 #include "capi_mesh.h"
 #include "far_points.h"
+#include "osd_patches.h"
 #include "osd_references.h"
 #include "osd_shape.h"
 #include "random_mesh.h"
@@ -53,6 +72,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <sstream>
 
 using namespace OpenSubdiv;
@@ -86,7 +106,36 @@ struct Figures {
     double worst_pos_random = 0, worst_deriv_random = 0, worst_ref_random = 0;
     long random_bfr_points = 0, random_ref_points = 0;
     std::string patch_where;
+    // Osd::CpuEvaluator::EvalPatches (single precision in 3.5) beside Far's PatchTable.
+    long osd_points = 0, osd_exact_points = 0, osd_ref_points = 0, osd_chaikin_points = 0;
+    double osd_far_pos = 0, osd_far_deriv = 0;   // |Osd - Far's PatchTable| at the same patch
+    double osd_pos = 0, osd_deriv = 0;           // |Osd - profsubd| where the PatchTable is exact
+    double patch_pos = 0, patch_deriv = 0;       // |PatchTable - profsubd| there (doubles)
+    double osd_ref = 0, patch_ref = 0;           // vs exact refinement at the dyadic points
+    double osd_chaikin_dev = 0;                  // |Osd - profsubd| / M, Chaikin + semi-sharp
+    std::string osd_far_where, osd_where;
+    // Far's PatchTable at darts vs profsubd's exact limit, per isolation level 2, 4, ..., 10:
+    // at the vertex, at 2^-(level+2) from it and at 2^-(level-2) from it (along the diagonal).
+    double dart_at[11] = {0}, dart_inside[11] = {0}, dart_outside[11] = {0};
+    std::string dart_where[11];
+    long darts = 0;
+    long chaikin_bfr_off = 0, chaikin_listed_faces = 0;  // Bfr vs PatchTable under Chaikin
+    double chaikin_bfr_max = 0;
+    std::string chaikin_bfr_where;
+    // Faces (not holes) repeating a vertex, "shape/face", and those Bfr declines (no surface).
+    std::set<std::string> repeat_faces, repeat_declined;
 };
+
+double max_abs_coordinate(const std::vector<double> &xyz) {
+    double m = 0;
+    for (double x : xyz) m = std::max(m, std::fabs(x));
+    return m;
+}
+
+// Osd's single precision: float rounding of coordinates, stencil weights and (u, v), relative
+// to the largest coordinate (or the diagonal if larger); for derivatives also times the
+// patch's derivative scale 2^depth.
+constexpr double kOsdPosTol = 1e-4, kOsdDerivTol = 1e-4;
 
 bool has_semi_sharp(const OsdShape &s) {
     for (float x : s.crease_sharpness) {
@@ -185,6 +234,59 @@ bool smooth_limit(const Far::TopologyLevel &l, const std::vector<Pt> &p, int w, 
     return true;
 }
 
+// Darts (interior, one infinitely sharp edge, not an infinitely sharp vertex, more than two
+// faces): Far's PatchTable (double local points) at isolation 2, 4, ..., 10 against profsubd,
+// which takes the exact limit (the dart's eigenvector) at the vertex and is exact nearby.
+void dart_isolation(const std::string &label, const OsdShape &shape, const Sdc::Options &opts,
+                    const Far::TopologyLevel &base, profsubd_evaluator *ev, Figures &fig) {
+    std::vector<int> darts;
+    for (int v = 0; v < base.GetNumVertices(); ++v) {
+        if (base.IsVertexBoundary(v) || base.IsVertexNonManifold(v) || base.GetVertexSharpness(v) >= 10.0f ||
+            base.GetVertexFaces(v).size() <= 2)
+            continue;
+        int inf = 0;
+        for (int e : base.GetVertexEdges(v)) inf += base.GetEdgeSharpness(e) >= 10.0f;
+        if (inf == 1) darts.push_back(v);
+    }
+    if (darts.empty()) return;
+    fig.darts += (long)darts.size();
+    double diag = profsubd_test::bbox_diagonal(shape.positions);
+    std::unique_ptr<Far::TopologyRefiner> plain = profsubd_test::build_refiner(shape, opts);
+    Far::PtexIndices ptex(*plain);
+    for (int level = 2; level <= 10; level += 2) {
+        profsubd_test::PatchTableEvaluator table(shape, opts, level, true);
+        for (int v : darts) {
+            for (int f : base.GetVertexFaces(v)) {
+                if (base.IsFaceHole(f)) continue;
+                auto fv = base.GetFaceVertices(f);
+                int k = fv.FindIndex(v), pf = ptex.GetFaceId(f);
+                double cu = 0, cv = 0, du = 1, dv = 1;  // corner and inward direction
+                if (fv.size() == 4) {
+                    cu = (k == 1 || k == 2), cv = k >= 2;
+                    du = cu ? -1 : 1, dv = cv ? -1 : 1;
+                } else {
+                    pf += k;
+                }
+                const double dist[3] = {0, std::ldexp(1.0, -(level + 2)), std::ldexp(1.0, -(level - 2))};
+                for (int d = 0; d < 3; ++d) {
+                    if (d == 2 && level == 2) continue;
+                    uint32_t face = (uint32_t)pf;
+                    double u = cu + du * dist[d], w = cv + dv * dist[d], p[3];
+                    if (profsubd_evaluator_evaluate(ev, &face, &u, &w, 1, p, nullptr, nullptr) != PROFSUBD_OK) continue;
+                    double q[3];
+                    if (!table.evaluate(pf, u, w, q)) continue;
+                    double e = norm(V3{q[0], q[1], q[2]} - V3{p[0], p[1], p[2]}) / diag;
+                    double *slot = d == 0 ? &fig.dart_at[level] : d == 1 ? &fig.dart_inside[level] : &fig.dart_outside[level];
+                    if (e > *slot) {
+                        *slot = e;
+                        if (d == 0) fig.dart_where[level] = label + " vertex " + std::to_string(v);
+                    }
+                }
+            }
+        }
+    }
+}
+
 class ShapeRun {
 public:
     ShapeRun(Checker &c, Figures &fig) : c_(c), fig_(fig) {}
@@ -234,8 +336,49 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
     // Reference evaluators.
     profsubd_test::BfrFactories bfr_factories(*refiner);
     Bfr::RefinerSurfaceFactory<> &cached = bfr_factories.cached, &uncached = bfr_factories.uncached;
-    std::unique_ptr<profsubd_test::PatchTableEvaluator> patch_table;
-    if (chaikin_semi) patch_table.reset(new profsubd_test::PatchTableEvaluator(shape, opts));
+    // Far's PatchTable (isolation 10, Gregory end caps, inf-sharp patches) and Osd over it.
+    profsubd_test::PatchTableEvaluator patch_table(shape, opts);
+    profsubd_test::OsdPatches osd(patch_table, shape.positions);
+    const double mag = std::max(diag, max_abs_coordinate(shape.positions));
+    // The faces `profsubd check` lists for its Chaikin hazard (profsubd_mesh_get_osd_hazard_faces).
+    std::vector<bool> chaikin_faces(base.GetNumFaces(), false);
+    {
+        profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
+        profsubd_test::OptionsPtr o = profsubd_test::capi_options(opts);
+        if (!c_.check(mesh && o, label + ": profsubd_mesh_new / options: " + err)) return;
+        size_t n = 0;
+        profsubd_mesh_get_osd_hazard_faces(mesh.get(), o.get(), PROFSUBD_OSD_HAZARD_CHAIKIN, nullptr, 0, &n);
+        std::vector<uint32_t> list(n);
+        st = profsubd_mesh_get_osd_hazard_faces(mesh.get(), o.get(), PROFSUBD_OSD_HAZARD_CHAIKIN, list.data(), n, &n);
+        c_.check(st == PROFSUBD_OK, label + ": profsubd_mesh_get_osd_hazard_faces");
+        for (uint32_t x : list) chaikin_faces[x] = true;
+        fig_.chaikin_listed_faces += (long)n;
+    }
+    // Far's PatchTable as a Sample; `scale`: 2^depth of the patch, by which its derivative
+    // weights multiply the points: float rounding of the points grows as much in derivatives.
+    auto patch_eval = [&](int pf, double u, double v, Sample *out, double *scale = nullptr) {
+        double p[3], du[3], dv[3];
+        int depth = 0;
+        if (!patch_table.evaluate(pf, u, v, p, du, dv, &depth)) return false;
+        if (scale) *scale = std::ldexp(1.0, depth);
+        *out = Sample{{p[0], p[1], p[2]}, {du[0], du[1], du[2]}, {dv[0], dv[1], dv[2]}};
+        return true;
+    };
+    auto osd_eval = [&](int pf, double u, double v, Sample *out) {
+        double p[3], du[3], dv[3];
+        if (!osd.evaluate(pf, u, v, p, du, dv)) return false;
+        *out = Sample{{p[0], p[1], p[2]}, {du[0], du[1], du[2]}, {dv[0], dv[1], dv[2]}};
+        return true;
+    };
+    auto rel = [&](V3 a, V3 b) { return norm(a - b) / std::max(norm(b), 1e-3 * diag); };
+
+    std::vector<bool> repeats(base.GetNumFaces(), false);
+    for (int f = 0; f < base.GetNumFaces(); ++f) {
+        auto fv = base.GetFaceVertices(f);
+        for (int a = 0; a < fv.size(); ++a)
+            for (int b = a + 1; b < fv.size(); ++b) repeats[f] = repeats[f] || fv[a] == fv[b];
+        if (repeats[f] && !base.IsFaceHole(f)) fig_.repeat_faces.insert(label + "/" + std::to_string(f));
+    }
 
     // Random points, grouped by base face for the Bfr side.
     profsubd_test::FacePoints points = profsubd_test::random_face_points(npoints, (int)nptex, seed);
@@ -286,6 +429,58 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
         return false;
     };
 
+    // Osd beside Far's PatchTable at (pf, u, v): both always (same patches, Osd in float);
+    // against profsubd (`p`, null where it has no surface) where the PatchTable is exact:
+    // farther than 2^-9 from irregular corners, not at a valence-2 dart (3.5's SourcePatch
+    // writes out of bounds there), under both crease methods (the PatchTable and profsubd are
+    // exact under Chaikin too; its points are also counted apart).
+    auto compare_osd = [&](int pf, double u, double v, const double *p, const double *du, const double *dv,
+                           bool at_dart2) {
+        Sample far, os;
+        double scale = 1;
+        bool has_far = patch_eval(pf, u, v, &far, &scale), has_osd = osd_eval(pf, u, v, &os);
+        std::ostringstream where;
+        where << label << " [" << name(Config{opts.GetVtxBoundaryInterpolation(), opts.GetCreasingMethod()})
+              << "] face " << pf << " (u, v) = (" << u << ", " << v << ")";
+        if (!c_.check(has_far == has_osd, where.str() + ": PatchMap and Osd disagree on a patch")) return;
+        if (!has_far) return;
+        ++fig_.osd_points;
+        // Osd against `ref` (named `what`) within the float tolerances; worst figures kept.
+        auto check_osd = [&](const Sample &ref, const std::string &what, double *pos, std::string *pos_where,
+                             double *deriv) {
+            double e = norm(os.p - ref.p) / mag;
+            if (e > *pos) {
+                *pos = e;
+                *pos_where = where.str();
+            }
+            c_.check(e <= kOsdPosTol, where.str() + ": Osd " + str(os.p) + " vs " + what + " " + str(ref.p));
+            double r = std::max(norm(os.du - ref.du), norm(os.dv - ref.dv)) / (scale * mag);
+            *deriv = std::max(*deriv, r);
+            c_.check(r <= kOsdDerivTol, where.str() + ": Osd du, dv " + str(os.du) + " " + str(os.dv) + " vs " + what +
+                                             " " + str(ref.du) + " " + str(ref.dv));
+        };
+        check_osd(far, "Far's PatchTable", &fig_.osd_far_pos, &fig_.osd_far_where, &fig_.osd_far_deriv);
+        if (!p || at_dart2 || near_irregular(pf, u, v)) return;
+        // On a non-quad's sub-face Far's PatchTable (and Osd) give twice the derivative with
+        // respect to the sub-face's (u, v) (checked by central differences of the PatchTable's
+        // own positions), as Bfr does in its tiled domain.
+        const double k = ptex_sub[pf] >= 0 ? 2.0 : 1.0;
+        Sample ours{{p[0], p[1], p[2]}, k * V3{du[0], du[1], du[2]}, k * V3{dv[0], dv[1], dv[2]}};
+        ++fig_.osd_exact_points;
+        if (chaikin_semi) {
+            ++fig_.osd_chaikin_points;
+            fig_.osd_chaikin_dev = std::max(fig_.osd_chaikin_dev, norm(os.p - ours.p) / mag);
+        }
+        check_osd(ours, "profsubd", &fig_.osd_pos, &fig_.osd_where, &fig_.osd_deriv);
+        double ef = norm(far.p - ours.p) / diag;
+        fig_.patch_pos = std::max(fig_.patch_pos, ef);
+        c_.check(ef <= 1e-12, where.str() + ": Far's PatchTable " + str(far.p) + " vs profsubd " + str(ours.p));
+        double rf = std::max(rel(far.du, ours.du), rel(far.dv, ours.dv));
+        fig_.patch_deriv = std::max(fig_.patch_deriv, rf);
+        c_.check(rf <= 1e-9, where.str() + ": Far's PatchTable du, dv " + str(far.du) + " " + str(far.dv) +
+                                 " vs profsubd " + str(ours.du) + " " + str(ours.dv));
+    };
+
     std::vector<double> P(3 * npoints), DU(3 * npoints), DV(3 * npoints);
     std::vector<int> order(npoints);
     for (int i = 0; i < npoints; ++i) order[i] = i;
@@ -305,6 +500,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
         }
         double p[3], du[3], dv[3];
         st = profsubd_evaluator_evaluate(ev.get(), &faces[i], &us[i], &vs[i], 1, p, du, dv);
+        compare_osd(pf, us[i], vs[i], st == PROFSUBD_OK ? p : nullptr, du, dv, at_dart2);
         if (at_dart2 || bfr35.avoid[f]) {
             fig_.bfr35_avoided += bfr35.avoid[f];
             continue;  // never given to Bfr (OpenSubdiv 3.5 writes out of bounds)
@@ -324,6 +520,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
             // Holes and faces without limit surface; Bfr also declines some degenerate faces.
             fig_.bfr_declined += 1;
             fig_.bfr_declined_ours_ok += st == PROFSUBD_OK;
+            if (repeats[f] && !base.IsFaceHole(f)) fig_.repeat_declined.insert(label + "/" + std::to_string(f));
             continue;
         }
         if (!c_.check(st == PROFSUBD_OK, where.str() + ": " + profsubd_test::describe_status(st))) continue;
@@ -352,10 +549,21 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
             continue;
         }
         if (chaikin_semi) {
-            double q[3];
-            if (!c_.check(patch_table->evaluate(pf, us[i], vs[i], q), where.str() + ": no PatchTable patch"))
-                continue;
-            V3 tp{q[0], q[1], q[2]};
+            // Bfr off Far's PatchTable (exact under Chaikin) only on faces `profsubd check`
+            // lists for its Chaikin hazard.
+            Sample far;
+            if (!c_.check(patch_eval(pf, us[i], vs[i], &far), where.str() + ": no PatchTable patch")) continue;
+            if (norm(bfr.p - far.p) / diag > 1e-12) {
+                ++fig_.chaikin_bfr_off;
+                if (norm(bfr.p - far.p) / diag > fig_.chaikin_bfr_max) {
+                    fig_.chaikin_bfr_max = norm(bfr.p - far.p) / diag;
+                    fig_.chaikin_bfr_where = where.str();
+                }
+                c_.check(chaikin_faces[f], where.str() + ": Bfr off Far's PatchTable by " +
+                                               std::to_string(norm(bfr.p - far.p) / diag) +
+                                               " x diagonal on a face `profsubd check` does not list (chaikin)");
+            }
+            V3 tp = far.p;
             double e = norm(tp - ours.p) / diag;
             if (e > fig_.worst_pos_patch) {
                 fig_.worst_pos_patch = e;
@@ -424,6 +632,17 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
                         skip_bfr = skip_bfr || dart2[base.GetFaceVertices(f)[q]];
                         int2 = int2 || interior2[base.GetFaceVertices(f)[q]];
                     }
+                    Sample far, os;
+                    if (!skip_bfr && patch_eval(pf, u, v, &far) && osd_eval(pf, u, v, &os)) {
+                        // Farther than 2^-3 from the corner: the PatchTable is exact there.
+                        ++fig_.osd_ref_points;
+                        double ef = norm(far.p - want) / diag, eo = norm(os.p - want) / mag;
+                        fig_.patch_ref = std::max(fig_.patch_ref, ef);
+                        fig_.osd_ref = std::max(fig_.osd_ref, eo);
+                        c_.check(ef <= 1e-12, where.str() + ": Far's PatchTable " + str(far.p) + " vs refinement " +
+                                                  str(want));
+                        c_.check(eo <= kOsdPosTol, where.str() + ": Osd " + str(os.p) + " vs refinement " + str(want));
+                    }
                     if (skip_bfr || bfr35.avoid[f]) continue;
                     bool ok = (int2 || bfr35.near_val2[f] ? uncached : cached).InitVertexSurface(f, &surface);
                     if (!ok) continue;
@@ -439,6 +658,7 @@ void ShapeRun::run(const std::string &label, const OsdShape &shape, const Sdc::O
                 }
         }
     }
+    dart_isolation(label, shape, opts, base, ev.get(), fig_);
     if (bfr35_rules) {
         fig_.random_bfr_points += fig_.bfr_points - bfr_points_before;
         fig_.random_ref_points += fig_.ref_points - ref_points_before;
@@ -533,5 +753,37 @@ int main() {
                   "refinement at the reference points: max %.3e x diagonal",
                   fig.bfr_near_dev, fig.bfr_near_where.c_str(), fig.bfr_ref_dev);
     c.note(b);
+    std::snprintf(b, sizeof b,
+                  "Osd::CpuEvaluator::EvalPatches over Osd::CpuPatchTable (float, as in 3.5): %ld points; vs Far's "
+                  "PatchTable (same patches, doubles) worst position %.2e x max(diagonal, largest coordinate) M, "
+                  "derivative %.2e x M x 2^patch depth (%s): Osd must agree with the PatchTable up to float rounding, not "
+                  "to 1e-15, since 3.5's Osd has no double path",
+                  fig.osd_points, fig.osd_far_pos, fig.osd_far_deriv, fig.osd_far_where.c_str());
+    c.note(b);
+    std::snprintf(b, sizeof b,
+                  "where the PatchTable is exact (%ld points): Osd vs profsubd worst position %.2e x M, derivative %.2e "
+                  "x M x 2^depth (%s); Far's PatchTable vs profsubd %.2e x diagonal, derivative %.2e relative; at %ld "
+                  "dyadic points vs exact refinement: PatchTable %.2e, Osd %.2e; under Chaikin with semi-sharp "
+                  "features (%ld points) Osd vs profsubd %.2e x diagonal (measured)",
+                  fig.osd_exact_points, fig.osd_pos, fig.osd_deriv, fig.osd_where.c_str(), fig.patch_pos,
+                  fig.patch_deriv, fig.osd_ref_points, fig.patch_ref, fig.osd_ref, fig.osd_chaikin_points,
+                  fig.osd_chaikin_dev);
+    c.note(b);
+    std::snprintf(b, sizeof b,
+                  "under Chaikin with semi-sharp features Bfr is off Far's PatchTable (> 1e-12 x diagonal) at %ld "
+                  "random points, up to %.2e x diagonal (%s), all on the %ld faces (summed over runs) `profsubd "
+                  "check` lists for its Chaikin hazard; faces repeating a vertex: Bfr declines %zu of %zu (no surface)",
+                  fig.chaikin_bfr_off, fig.chaikin_bfr_max, fig.chaikin_bfr_where.c_str(), fig.chaikin_listed_faces,
+                  fig.repeat_declined.size(), fig.repeat_faces.size());
+    c.note(b);
+    std::string darts = "Far's PatchTable at " + std::to_string(fig.darts) +
+                        " darts (all runs) vs the exact limit, x diagonal, by isolation level: at the vertex / at "
+                        "2^-(level+2) from it / at 2^-(level-2) from it:";
+    for (int level = 2; level <= 10; level += 2) {
+        std::snprintf(b, sizeof b, " %d: %.2e / %.2e / %.2e (%s);", level, fig.dart_at[level], fig.dart_inside[level],
+                      fig.dart_outside[level], fig.dart_where[level].c_str());
+        darts += b;
+    }
+    c.note(darts);
     return c.finish();
 }

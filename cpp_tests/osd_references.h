@@ -22,12 +22,22 @@ struct BfrFactories {
 };
 
 // Far's PatchTable + PatchMap of `shape` under `options`, with the refined and local points.
+// `isolation`: adaptive isolation level (10 in the conformance tests; dart_isolation varies
+// it); `double_local_points`: end-cap local points from Far's double stencils (float ones
+// otherwise, which Osd also applies; only near irregular corners do they differ).
 class PatchTableEvaluator {
 public:
-    PatchTableEvaluator(const OsdShape &shape, const OpenSubdiv::Sdc::Options &options);
-    // Position at (u, v) of Ptex face `face`; null patch (false) where there is no surface.
-    bool evaluate(int face, double u, double v, double p[3], double du[3] = nullptr,
-                  double dv[3] = nullptr) const;
+    PatchTableEvaluator(const OsdShape &shape, const OpenSubdiv::Sdc::Options &options, int isolation = 10,
+                        bool double_local_points = false);
+    // Position and derivatives at (u, v) of Ptex face `face`; null patch (false) where there is
+    // no surface. `depth`: the patch's refinement level (its derivatives scale by 2^depth).
+    bool evaluate(int face, double u, double v, double p[3], double du[3] = nullptr, double dv[3] = nullptr,
+                  int *depth = nullptr) const;
+
+    // The adaptively refined topology, the table and its map (for Osd over the same patches).
+    const OpenSubdiv::Far::TopologyRefiner &refiner() const { return *refiner_; }
+    const OpenSubdiv::Far::PatchTable &table() const { return *table_; }
+    const OpenSubdiv::Far::PatchMap &map() const { return *map_; }
 
 private:
     std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> refiner_;

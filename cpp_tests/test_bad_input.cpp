@@ -659,6 +659,54 @@ void check_folds(Checker &ck) {
     profsubd_evaluator_free(ev);
 }
 
+// profsubd_mesh_get_osd_hazard_vertices / _faces on a cube with one infinitely sharp edge
+// 1-5: both ends are darts (interior, one sharp edge), their faces are 0-3.
+void check_osd_hazards(Checker &ck) {
+    ck.set_context("osd hazards");
+    OsdShape cube;
+    std::string err;
+    const char *obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                      "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\nt crease 2/1/0 1 5 10\n";
+    if (!ck.check(parse_osd_shape(obj, &cube, &err), "cube: " + err)) return;
+    MeshPtr m = new_mesh_capi(cube, &err);
+    if (!ck.check(m != nullptr, "cube with a dart edge: " + err)) return;
+    auto real = [&](const profsubd_mesh *p) { return p == kNoMesh ? m.get() : p; };
+    check_copy_out<uint32_t>(ck, "get_osd_hazard_vertices", 2, 1,
+                             [&](const profsubd_mesh *p, uint32_t *o, size_t c, size_t *n) {
+                                 return profsubd_mesh_get_osd_hazard_vertices(real(p), nullptr,
+                                                                              PROFSUBD_OSD_HAZARD_DART, o, c, n);
+                             });
+    check_copy_out<uint32_t>(ck, "get_osd_hazard_faces", 4, 1,
+                             [&](const profsubd_mesh *p, uint32_t *o, size_t c, size_t *n) {
+                                 return profsubd_mesh_get_osd_hazard_faces(real(p), nullptr,
+                                                                           PROFSUBD_OSD_HAZARD_DART, o, c, n);
+                             });
+    uint32_t out[8] = {77, 77, 77, 77, 77, 77, 77, 77};
+    size_t n = 999;
+    ck.equal(int(profsubd_mesh_get_osd_hazard_vertices(m.get(), nullptr, PROFSUBD_OSD_HAZARD_DART, out, 8, &n)),
+             int(PROFSUBD_OK), "dart vertices");
+    ck.check(n == 2 && out[0] == 1 && out[1] == 5, "dart vertices are 1 and 5");
+    ck.equal(int(profsubd_mesh_get_osd_hazard_faces(m.get(), nullptr, PROFSUBD_OSD_HAZARD_DART, out, 8, &n)),
+             int(PROFSUBD_OK), "dart faces");
+    ck.check(n == 4 && out[0] == 0 && out[1] == 1 && out[2] == 2 && out[3] == 3, "dart faces are 0-3");
+    ck.equal(int(profsubd_mesh_get_osd_hazard_vertices(m.get(), nullptr, PROFSUBD_OSD_HAZARD_CHAIKIN, out, 8, &n)),
+             int(PROFSUBD_OK), "no Chaikin hazard");
+    ck.equal(n, size_t(0), "no Chaikin hazard: *needed = 0");
+    std::fill(std::begin(out), std::end(out), 77);
+    n = 999;
+    for (int32_t kind : {-1, 7}) {
+        expect(ck, profsubd_mesh_get_osd_hazard_vertices(m.get(), nullptr, kind, out, 8, &n),
+               PROFSUBD_ERROR_INVALID_ARGUMENT, {"hazard kind", std::to_string(kind)}, "kind out of range");
+        expect(ck, profsubd_mesh_get_osd_hazard_faces(m.get(), nullptr, kind, out, 8, &n),
+               PROFSUBD_ERROR_INVALID_ARGUMENT, {"hazard kind"}, "kind out of range (faces)");
+    }
+    const auto *wrong = reinterpret_cast<const profsubd_options *>(m.get());
+    expect(ck, profsubd_mesh_get_osd_hazard_vertices(m.get(), wrong, PROFSUBD_OSD_HAZARD_DART, out, 8, &n),
+           PROFSUBD_ERROR_INVALID_HANDLE, {"options"}, "a mesh passed as options");
+    ck.check(n == 999 && std::all_of(std::begin(out), std::end(out), [](uint32_t x) { return x == 77; }),
+             "failed calls leave the outputs alone");
+}
+
 }  // namespace
 
 int main() {
@@ -667,6 +715,7 @@ int main() {
     check_mesh_new(ck);
     check_read_write(ck, tmp);
     check_queries(ck);
+    check_osd_hazards(ck);
     check_handles(ck);
     check_options(ck);
     check_refine(ck);

@@ -238,6 +238,44 @@ typedef enum profsubd_domain {
 } profsubd_domain;
 
 /**
+ * Kinds of OpenSubdiv 3.5 hazard, for `profsubd_mesh_get_osd_hazard_vertices` and
+ * `_faces` (passed as `int32_t`). What each means, and the figures measured by the
+ * conformance suite: README, section on `profsubd check`.
+ */
+typedef enum profsubd_osd_hazard {
+    /**
+     * Interior vertex with one infinitely sharp edge: Bfr, Far's PatchTable and Osd use the
+     * smooth limit mask at their last isolation level.
+     */
+    PROFSUBD_OSD_HAZARD_DART = 0,
+    /**
+     * Interior valence-2 dart: 3.5's `Far::SourcePatch` writes out of bounds (Bfr crashes,
+     * the PatchTable is silently wrong).
+     */
+    PROFSUBD_OSD_HAZARD_VALENCE2_DART = 1,
+    /**
+     * Interior valence-2 vertex with sharp features in its faces: 3.5's Bfr is not safe.
+     */
+    PROFSUBD_OSD_HAZARD_VALENCE2_SHARP = 2,
+    /**
+     * Other interior valence-2 vertex: Bfr's topology cache can mix up its faces.
+     */
+    PROFSUBD_OSD_HAZARD_VALENCE2 = 3,
+    /**
+     * Semi-sharp edges of different sharpness meet under Chaikin creasing: Bfr is not exact.
+     */
+    PROFSUBD_OSD_HAZARD_CHAIKIN = 4,
+    /**
+     * A face repeats the vertex.
+     */
+    PROFSUBD_OSD_HAZARD_REPEATED_VERTEX = 5,
+    /**
+     * `Far::PrimvarRefiner::Limit` is not the limit at the vertex.
+     */
+    PROFSUBD_OSD_HAZARD_PRIMVAR_LIMIT = 6,
+} profsubd_osd_hazard;
+
+/**
  * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
  * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
@@ -1016,6 +1054,32 @@ enum profsubd_status profsubd_options_set_crease_method(struct profsubd_options 
  */
 enum profsubd_status profsubd_options_set_triangle_rule(struct profsubd_options *options,
                                                         int32_t rule);
+
+/**
+ * Copy the vertices of OpenSubdiv 3.5 hazard `kind` (a `profsubd_osd_hazard` value) on
+ * `mesh` under `options` (NULL: the mesh's tags and the defaults), in increasing order;
+ * none (`*needed` = 0) if the mesh has no such hazard. `capacity` and `*needed` count
+ * vertices. A `kind` out of range gives `PROFSUBD_ERROR_INVALID_ARGUMENT`.
+ */
+enum profsubd_status profsubd_mesh_get_osd_hazard_vertices(const struct profsubd_mesh *mesh,
+                                                           const struct profsubd_options *options,
+                                                           int32_t kind,
+                                                           uint32_t *out,
+                                                           size_t capacity,
+                                                           size_t *needed);
+
+/**
+ * Copy the faces (not holes) on which OpenSubdiv 3.5 is wrong or unsafe for hazard `kind`,
+ * in increasing order (see `profsubd_mesh_get_osd_hazard_vertices`; none for
+ * `PROFSUBD_OSD_HAZARD_PRIMVAR_LIMIT`, a per-vertex hazard). `capacity` and `*needed`
+ * count faces.
+ */
+enum profsubd_status profsubd_mesh_get_osd_hazard_faces(const struct profsubd_mesh *mesh,
+                                                        const struct profsubd_options *options,
+                                                        int32_t kind,
+                                                        uint32_t *out,
+                                                        size_t capacity,
+                                                        size_t *needed);
 
 /**
  * Build a profile model: blend the sweeps of the four curves, sample data points, build

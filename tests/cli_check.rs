@@ -6,6 +6,8 @@ mod osd_shapes;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
+use profsubd::mesh::HazardKind;
+
 fn profsubd(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_profsubd"))
         .args(args)
@@ -156,8 +158,13 @@ fn check_accepts_the_bundled_example() {
          boundary interpolation: edge-and-corner (file tag)\n\
          crease method: uniform (default)\n\
          triangles: catmark (default)\n\
+         opensubdiv 3.5 hazards: 2\n\
+         hazard dart: vertices 2 [1 5], faces 4 [0 1 2 3] (Bfr, Far::PatchTable, Osd): {}\n\
+         hazard primvar_limit: vertices 6 [1 2 4 5 6 7] (Far::PrimvarRefiner::Limit): {}\n\
          result: manifold mesh\n",
-        input.display()
+        input.display(),
+        HazardKind::Dart.figure(),
+        HazardKind::PrimvarLimit.figure(),
     );
     assert_eq!(stdout(&o), expected);
 }
@@ -197,6 +204,7 @@ fn check_exits_2_on_a_mesh_that_loads_but_is_not_a_manifold() {
          boundary interpolation: edge-and-corner (default)\n\
          crease method: chaikin (command line)\n\
          triangles: catmark (default)\n\
+         opensubdiv 3.5 hazards: 0\n\
          result: not a manifold (1 non-manifold edges, 1 inconsistently oriented edges, \
          4 non-manifold vertices, 1 isolated vertices)\n",
         input.display()
@@ -229,6 +237,7 @@ fn check_exits_2_on_a_mesh_that_loads_but_is_not_a_manifold() {
             "crease_method": {"value": "uniform", "source": "default"},
             "triangles": {"value": "catmark", "source": "default"},
         },
+        "osd_hazards": [],
     });
     assert_eq!(json, expected);
 }

@@ -1,4 +1,5 @@
-//! `profsubd check MESH.obj`: counts, valences, boundary, non-manifold findings, tags.
+//! `profsubd check MESH.obj`: counts, valences, boundary, non-manifold findings, tags, and
+//! where OpenSubdiv 3.5 is not exact or not safe (warnings).
 
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -149,6 +150,10 @@ pub fn format_report(
     for (name, value, from) in settings {
         line(name, format!("{value} ({from})"));
     }
+    out.push_str(&hazards::lines(mesh, flags));
+    let mut line = |name: &str, value: String| {
+        let _ = writeln!(out, "{name}: {value}");
+    };
     let verdict = if r.is_manifold() {
         "manifold mesh".to_string()
     } else {
@@ -239,11 +244,57 @@ pub fn json_report(
             "vertex": c.vertex, "sharpness": c.sharpness })).collect::<Vec<_>>(),
         "holes": mesh.holes(),
         "options": options,
+        "osd_hazards": hazards::json(mesh, flags),
     });
     if let (Some(obj), serde_json::Value::Object(more)) = (value.as_object_mut(), extra) {
         obj.extend(more);
     }
     value
+}
+
+/// OpenSubdiv 3.5 hazards ([`crate::mesh::osd_hazards()`]): warnings, no effect on the exit code.
+mod hazards {
+    use super::{count_and_list, SubdivFlags};
+    use crate::mesh::{osd_hazards, Hazard, Mesh};
+
+    fn of(mesh: &Mesh, flags: &SubdivFlags) -> Vec<Hazard> {
+        osd_hazards(mesh, &flags.partial().over(mesh.options()).resolve())
+    }
+
+    /// `opensubdiv 3.5 hazards: n` and one `hazard KIND: ...` line per kind that occurs.
+    pub(super) fn lines(mesh: &Mesh, flags: &SubdivFlags) -> String {
+        let found = of(mesh, flags);
+        let mut out = format!("opensubdiv 3.5 hazards: {}\n", found.len());
+        for h in found {
+            let list = |l: &[u32]| count_and_list(l.len(), l.iter().map(u32::to_string));
+            let faces = if h.faces.is_empty() {
+                String::new()
+            } else {
+                format!(", faces {}", list(&h.faces))
+            };
+            out.push_str(&format!(
+                "hazard {}: vertices {}{faces} ({}): {}\n",
+                h.kind.name(),
+                list(&h.vertices),
+                h.kind.affects().join(", "),
+                h.kind.figure()
+            ));
+        }
+        out
+    }
+
+    /// The `osd_hazards` array of `--json`: kind, vertices, faces, affects, figure.
+    pub(super) fn json(mesh: &Mesh, flags: &SubdivFlags) -> serde_json::Value {
+        of(mesh, flags)
+            .iter()
+            .map(|h| {
+                serde_json::json!({
+                    "kind": h.kind, "vertices": h.vertices, "faces": h.faces,
+                    "affects": h.kind.affects(), "figure": h.kind.figure(),
+                })
+            })
+            .collect()
+    }
 }
 
 /// `k:n k:n ...` for a histogram.

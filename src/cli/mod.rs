@@ -55,7 +55,9 @@ pub enum Command {
     /// Euler characteristic, non-manifold edges and vertices, inconsistently oriented edges,
     /// isolated vertices, faces that repeat a vertex (with the first few offenders,
     /// 0-based vertex and face indices as in OBJ tags), crease, corner and hole tags, and
-    /// the subdivision options in effect with where each comes from. Exit code 0 for a
+    /// the subdivision options in effect with where each comes from, and where OpenSubdiv
+    /// 3.5 is not exact or not safe under them (darts, valence-2 vertices, Chaikin, repeated
+    /// vertices, PrimvarRefiner::Limit; warnings only). Exit code 0 for a
     /// manifold mesh, 2 for a mesh that loads but is not a manifold (OpenSubdiv accepts
     /// it), 1 for a file that cannot be read or is not a valid mesh (reason on stderr).
     /// With --surface, also samples the limit surface of every face and reports where it

@@ -60,6 +60,7 @@ pub mod mesh;
 pub mod mesh_io;
 pub mod mesh_topology;
 pub mod options;
+pub mod osd_hazards;
 pub mod panic;
 pub mod profile;
 pub mod ptr;

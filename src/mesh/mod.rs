@@ -16,7 +16,9 @@ use glam::DVec3;
 use crate::error::{Error, Result};
 use crate::options::PartialOptions;
 
+pub mod osd_hazards;
 pub mod validate;
+pub use osd_hazards::{osd_hazards, Hazard, HazardKind};
 pub use validate::MeshReport;
 
 /// Largest number of vertices, faces or face-vertex indices a mesh may have: OpenSubdiv

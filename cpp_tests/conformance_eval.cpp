@@ -763,8 +763,8 @@ int main() {
     std::snprintf(b, sizeof b,
                   "where the PatchTable is exact (%ld points): Osd vs profsubd worst position %.2e x M, derivative %.2e "
                   "x M x 2^depth (%s); Far's PatchTable vs profsubd %.2e x diagonal, derivative %.2e relative; at %ld "
-                  "dyadic points vs exact refinement: PatchTable %.2e, Osd %.2e; under Chaikin with semi-sharp "
-                  "features (%ld points) Osd vs profsubd %.2e x diagonal (measured)",
+                  "dyadic points vs exact refinement: PatchTable %.2e, Osd %.2e; of those points %ld under Chaikin "
+                  "with semi-sharp features, Osd vs profsubd there %.2e x M",
                   fig.osd_exact_points, fig.osd_pos, fig.osd_deriv, fig.osd_where.c_str(), fig.patch_pos,
                   fig.patch_deriv, fig.osd_ref_points, fig.patch_ref, fig.osd_ref, fig.osd_chaikin_points,
                   fig.osd_chaikin_dev);

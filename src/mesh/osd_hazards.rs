@@ -101,9 +101,10 @@ impl HazardKind {
                 "Bfr, Far's PatchTable and Osd use the smooth limit mask at their last isolation \
                  level (at most 10): not exact at the vertex and within ~2^-level of it in (u, v) \
                  on these faces; at isolation 10 the PatchTable is off by up to 7.4e-6 x diagonal \
-                 at the vertex and 2.2e-5 at 2^-12 from it, exact (3e-16) at 2^-8 from it, \
-                 falling ~0.3x per two levels (ctest conformance_eval); Bfr up to 7.4e-6 at the \
-                 vertex (ctest conformance_limit_vertices)"
+                 at the vertex and 2.2e-5 at 2^-12 from it, exact (2e-16) at 2^-8 from it; the \
+                 error falls ~0.3x per two isolation levels from level 4 on (ctest \
+                 conformance_eval); Bfr up to 7.4e-6 at the vertex (ctest \
+                 conformance_limit_vertices)"
             }
             HazardKind::Valence2Dart => {
                 "3.5's Far::SourcePatch miscounts the ring and writes one element past an array: \

@@ -13,9 +13,14 @@
 //! most 180° no quad has a reflex angle. Interior vertices come from transfinite (Coons)
 //! interpolation in the unit sector, as a relative radius ρ and an angle θ; a flat cap
 //! scales ρ by the ring's radius in the ring's plane, a pole maps `(ρ, θ)` onto the surface
-//! through [`cap_point`] (the same placement as a full turn's pole cap). A pole's apex is an
+//! through [`cap_point`] (the same placement as a full turn's pole cap), and replaces up to
+//! `k` profile intervals (its radial lines have `k` intervals; see `RevolveInput::grid`), so
+//! that its cells are about as large as the side's faces. A pole's apex is an
 //! infinitely sharp corner: the two boundary meridians meet there at the wedge angle, and
-//! with caps three creases meet there.
+//! with caps three creases meet there. Catmull-Clark's corner rule maps the faces between a
+//! corner's two creases into the convex cone of their tangents, so a sector of 180° or more
+//! would fold at its apex: there the first edge of the bisector is an infinitely sharp crease
+//! too (ending in a dart), which splits the apex's span into two halves below 180°.
 //!
 //! *Meridian caps* (`"caps": "flat"`; both ends then have a sector). Each meridian plane is
 //! closed by one structured grid. Its boundary is the bottom sector's radial line (`k`
@@ -30,7 +35,9 @@
 //! strictly (rows are then horizontal); otherwise at a blend of their running-maximum height
 //! and a small share (2%, then 10%, 30%, 100%) of its chord-length fraction, which keeps them
 //! strictly rising and the rows nearly horizontal (a flat foot or a flat top, say). Interior vertices come from Coons
-//! interpolation in the `(r, z)` plane; the first layout that does not fold is taken, and a
+//! interpolation in the `(r, z)` plane; of the layouts that do not fold the best-shaped is
+//! taken (the largest smallest sine of a quad's corner angle: a flat foot continuing the
+//! bottom radial line would otherwise leave slivers between it and the first rows), and a
 //! profile for which none exists (a hollow glass whose bowl and foot both reach the axis) is
 //! refused.
 //!
@@ -40,7 +47,7 @@
 //! control points, and their fit is planar too, so the caps are flat in the limit.
 
 use std::collections::HashSet;
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
@@ -252,6 +259,17 @@ impl Wedge {
             quads.extend(half);
         }
         self.add_patch(quads, creased);
+        if angle >= PI {
+            // The apex is an infinitely sharp corner, whose faces Catmull-Clark's corner rule
+            // maps into the convex cone of its two crease tangents: a reflex (or straight)
+            // span folds. A crease from the apex along the bisector splits it in two.
+            let edge = (apex.min(mid[1]), apex.max(mid[1]));
+            self.creased.insert(edge);
+            self.parts.creases.push(Crease {
+                vertices: [apex, mid[1]],
+                sharpness: SHARPNESS_INFINITE,
+            });
+        }
         Sector {
             apex,
             radials: [first, last],
@@ -376,7 +394,7 @@ struct MeridianPlane {
 }
 
 impl MeridianPlane {
-    /// The first unfolded layout: split `a = 0, 1, ...` (at most [`MAX_SPLITS`] values,
+    /// The best-shaped unfolded layout ([`min_corner_sine`]): split `a = 0, 1, ...` (at most [`MAX_SPLITS`] values,
     /// evenly spread, so that a refusal stays cheap), and for each the axis spacings of
     /// [`MeridianPlane::axis_spacings`].
     fn choose(&self) -> Result<(usize, Vec<Vec<DVec2>>)> {
@@ -388,17 +406,26 @@ impl MeridianPlane {
             (0..=MAX_SPLITS).map(|t| t * last / MAX_SPLITS).collect()
         };
         let mut first_error = None;
+        let mut best: Option<(f64, usize, Vec<Vec<DVec2>>)> = None;
         for a in splits {
             for u in self.axis_spacings(a) {
                 match self.grid(a, u) {
-                    Ok(grid) => return Ok((a, grid)),
+                    Ok(grid) => {
+                        let q = min_corner_sine(&grid);
+                        if best.as_ref().is_none_or(|b| q > b.0) {
+                            best = Some((q, a, grid));
+                        }
+                    }
                     Err(e) => {
                         first_error.get_or_insert(e);
                     }
                 }
             }
         }
-        Err(first_error.expect("at least one layout is tried"))
+        match best {
+            Some((_, a, grid)) => Ok((a, grid)),
+            None => Err(first_error.expect("at least one layout is tried")),
+        }
     }
 
     /// Candidate axis spacings (fractions from the bottom apex to the top apex) for split
@@ -463,6 +490,29 @@ impl MeridianPlane {
         check_unfolded(&grid)?;
         Ok(grid)
     }
+}
+
+/// The smallest sine of a quad corner angle in the grid (1 for rectangles, near 0 for
+/// slivers), signed by the orientation of the whole grid.
+fn min_corner_sine(grid: &[Vec<DVec2>]) -> f64 {
+    let (a, b) = (grid.len() - 1, grid[0].len() - 1);
+    let sines: Vec<f64> = (0..a)
+        .flat_map(|i| (0..b).map(move |j| (i, j)))
+        .flat_map(|(i, j)| {
+            let q = [
+                grid[i][j],
+                grid[i][j + 1],
+                grid[i + 1][j + 1],
+                grid[i + 1][j],
+            ];
+            (0..4).map(move |c| {
+                let (p, n) = (q[(c + 3) % 4] - q[c], q[(c + 1) % 4] - q[c]);
+                n.perp_dot(p) / (n.length() * p.length()).max(f64::MIN_POSITIVE)
+            })
+        })
+        .collect();
+    let sign = sines.iter().sum::<f64>().signum();
+    sines.iter().map(|s| s * sign).fold(f64::INFINITY, f64::min)
 }
 
 /// Error if a quad of the meridian cap grid folds: its signed area has the wrong sign, or

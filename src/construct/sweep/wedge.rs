@@ -41,6 +41,10 @@
 //! profile for which none exists (a hollow glass whose bowl and foot both reach the axis) is
 //! refused.
 //!
+//! Where the column turns towards the axis at a crease ring (a cup's foot, a neck), the cap
+//! spans a reflex angle at that corner; the row edge from it inwards is then creased too
+//! (ending in a dart), for the same reason as at a sector's apex.
+//!
 //! Every edge where a flat cap meets the side or another cap is an infinitely sharp crease,
 //! and every vertex where three or more creases meet an infinitely sharp corner. A cap's
 //! data points lie in its plane; behind its creases its limit surface depends only on its own
@@ -355,7 +359,62 @@ impl Wedge {
             }
         }
         self.add_patch(grid_quads(&ids), true);
+        self.split_reflex_corners(&ids, &column[1..rows]);
         Ok(())
+    }
+
+    /// Crease the grid edge from each corner (three creases) among `candidates` on the
+    /// boundary of the flat grid `ids` inwards, where the grid's span there is reflex: like
+    /// a sector's apex, the corner rule cannot fill more than 180° between two creases (a
+    /// crease ring meeting a profile that turns towards the axis, a cup's foot or a neck).
+    fn split_reflex_corners(&mut self, ids: &[Vec<u32>], candidates: &[u32]) {
+        let mut degree = std::collections::HashMap::new();
+        for &(a, b) in &self.creased {
+            *degree.entry(a).or_insert(0usize) += 1;
+            *degree.entry(b).or_insert(0usize) += 1;
+        }
+        let (n1, n2) = (ids.len() - 1, ids[0].len() - 1);
+        let at = |v: u32| self.parts.positions[v as usize];
+        let mut splits = Vec::new();
+        for i in 0..=n1 {
+            for j in 0..=n2 {
+                let v = ids[i][j];
+                let interior = |i: usize, j: usize| i > 0 && i < n1 && j > 0 && j < n2;
+                if !candidates.contains(&v) || degree.get(&v).copied().unwrap_or(0) < 3 {
+                    continue;
+                }
+                // The boundary vertex's grid neighbours: two on the boundary, one inside.
+                let near: Vec<(usize, usize)> = [(1, 0), (0, 1), (-1, 0), (0, -1)]
+                    .iter()
+                    .map(|&(di, dj)| (i as i64 + di, j as i64 + dj))
+                    .filter(|&(a, b)| a >= 0 && b >= 0 && a <= n1 as i64 && b <= n2 as i64)
+                    .map(|(a, b)| (a as usize, b as usize))
+                    .collect();
+                let inside: Vec<&(usize, usize)> =
+                    near.iter().filter(|&&(a, b)| interior(a, b)).collect();
+                let rim: Vec<u32> = near
+                    .iter()
+                    .filter(|&&(a, b)| !interior(a, b))
+                    .map(|&(a, b)| ids[a][b])
+                    .collect();
+                let (&[&(qi, qj)], &[p, n]) = (inside.as_slice(), rim.as_slice()) else {
+                    continue;
+                };
+                let q = ids[qi][qj];
+                let rz = |w: u32| DVec2::new(at(w).truncate().length(), at(w).z);
+                if reflex_bisector(rz(v), rz(p), rz(n), rz(q)).is_some() {
+                    splits.push((v, q));
+                }
+            }
+        }
+        for (v, q) in splits {
+            if self.creased.insert((v.min(q), v.max(q))) {
+                self.parts.creases.push(Crease {
+                    vertices: [v, q],
+                    sharpness: SHARPNESS_INFINITE,
+                });
+            }
+        }
     }
 
     /// Tag every vertex with three or more crease edges (and each of `extra`) as an
@@ -490,6 +549,20 @@ impl MeridianPlane {
         check_unfolded(&grid)?;
         Ok(grid)
     }
+}
+
+/// The unit bisector of the span at `v` from its neighbour `p` to its neighbour `n` that
+/// holds `q`, if that span is reflex (180° or more).
+fn reflex_bisector(v: DVec2, p: DVec2, n: DVec2, q: DVec2) -> Option<DVec2> {
+    let turn = |w: DVec2| (w - v).y.atan2((w - v).x);
+    let ccw = |from: f64, to: f64| (to - from).rem_euclid(TAU);
+    let (tp, tn, tq) = (turn(p), turn(n), turn(q));
+    let (start, span) = if ccw(tp, tq) < ccw(tp, tn) {
+        (tp, ccw(tp, tn))
+    } else {
+        (tn, ccw(tn, tp))
+    };
+    (span >= PI).then(|| DVec2::from_angle(start + span / 2.0))
 }
 
 /// The smallest sine of a quad corner angle in the grid (1 for rectangles, near 0 for

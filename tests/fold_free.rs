@@ -182,7 +182,10 @@ fn partial_vase_revolutions_with_flat_caps_do_not_fold() {
     let text = std::fs::read_to_string(&path).unwrap();
     let input = RevolveInput::from_json(&text, &path).unwrap();
     let r = revolve(&input).unwrap().surface_report().unwrap().clone();
-    println!("vase_cutaway: folded {}", r.folded_faces);
+    println!(
+        "vase_cutaway: folded {}, design distance max {:.2e} mean {:.2e}",
+        r.folded_faces, r.max_design_distance, r.mean_design_distance
+    );
     assert_eq!(r.folded_faces, 0, "{r:?}");
     for angle in [90.0, 180.0, 270.0] {
         for (around, along) in [(16, 16), (32, 32)] {
@@ -198,13 +201,18 @@ fn partial_vase_revolutions_with_flat_caps_do_not_fold() {
 
 #[test]
 fn wine_glass_cutaway_folds_less() {
-    // Not yet fold-free: 18 faces of its meridian caps fold next to the reflex corners where
-    // the foot's top meets the stem and the stem the bowl (244 before the pole sectors were
-    // deepened, their apexes split and the meridian caps' layout chosen by shape).
+    // Not yet fold-free: the first face of each pole sector half at the two apexes (4) folds,
+    // where the apex's 270° span between its two creases cannot be filled by the corner rule
+    // (a flat sector's bisector is creased to the arc; a pole's has no crease to end at).
+    // 244 before the pole sectors were deepened, the meridian caps' layout chosen by shape
+    // and their reflex corners split.
     let path = example("sweeps", "wine_glass_cutaway");
     let text = std::fs::read_to_string(&path).unwrap();
     let s = revolve(&RevolveInput::from_json(&text, &path).unwrap()).unwrap();
     let r = s.surface_report().unwrap();
-    println!("wine_glass_cutaway: folded {}", r.folded_faces);
-    assert!(r.folded_faces <= 18, "{r:?}");
+    println!(
+        "wine_glass_cutaway: folded {}, design distance max {:.2e} mean {:.2e}",
+        r.folded_faces, r.max_design_distance, r.mean_design_distance
+    );
+    assert!(r.folded_faces <= 4, "{r:?}");
 }

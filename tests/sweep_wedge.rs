@@ -123,18 +123,18 @@ fn capped_vase_wedge_is_a_closed_solid_with_flat_caps() {
         r.valences
     );
     // Creases: 2 arcs of na, 4 sector radials of k, 2 columns of R − 1, the axis (R − 1),
-    // the crease ring (na), and (270° ≥ 180°) each apex's first bisector edge.
-    assert_eq!(s.mesh.creases().len(), 3 * na + 4 * k + 3 * (rings - 1) + 2);
+    // the crease ring (na), and (270° ≥ 180°) each flat sector's bisector (k).
+    assert_eq!(s.mesh.creases().len(), 3 * na + 6 * k + 3 * (rings - 1));
     assert!(s
         .mesh
         .creases()
         .iter()
         .all(|c| c.sharpness == SHARPNESS_INFINITE));
-    // Corners where three creases meet: 2 apexes, the 4 ends of the two columns and the 2
-    // ends of the crease ring.
-    // (The apexes have four: with their bisector edge.)
-    assert_eq!(crease_degrees(&s)[2..], [6, 2]);
-    assert_eq!(s.mesh.corners().len(), 8);
+    // Corners where three creases meet: the 4 ends of the two columns, the 2 ends of the
+    // crease ring and the 2 ends of the sectors' bisectors on the arcs; four: the 2 apexes
+    // (270° ≥ 180°: with their bisectors).
+    assert_eq!(crease_degrees(&s)[2..], [8, 2]);
+    assert_eq!(s.mesh.corners().len(), 10);
     // Outward: the volume enclosed by the data-point quads is positive, 3/4 of the capped
     // full turn's (up to the polygon's chords: 16 sides over 270° or over 360°).
     let mut full = wedge(vase(), 360.0, Caps::Flat, np, na);
@@ -229,14 +229,13 @@ fn capped_sphere_wedge_closes_with_two_flat_meridian_caps() {
     assert_eq!(r.euler_characteristic, 2);
     assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
     assert!(largest_valence(&s) <= 5);
-    // Creases: two columns continued by the pole sectors' radial lines to the apexes, the
-    // axis (`R − 1 − 2a` intervals), and (270° ≥ 180°) each apex's first bisector edge; only the apexes have more
-    // than two (four).
+    // Creases: two columns continued by the pole sectors' radial lines to the apexes, and
+    // the axis (`R − 1 − 2a` intervals); only the apexes have three.
     assert_eq!(
         s.mesh.creases().len(),
-        2 * (rings - 1 + 2 * k) + (rings - 1 - 2 * a) + 2
+        2 * (rings - 1 + 2 * k) + (rings - 1 - 2 * a)
     );
-    assert_eq!(crease_degrees(&s)[2..], [0, 2]);
+    assert_eq!(crease_degrees(&s)[2], 2);
     assert_eq!(s.mesh.corners().len(), 2);
     assert!(relative_residual(&s) <= 1e-10);
     assert!(volume(&s) > 0.0);
@@ -260,8 +259,9 @@ fn capped_half_cone_has_a_tip_and_a_flat_sector() {
     let r = check(&s.mesh);
     assert_eq!(r.euler_characteristic, 2);
     assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
-    // Corners: the tip, the bottom apex and the two ends of the bottom arc.
-    assert_eq!(s.mesh.corners().len(), 4);
+    // Corners: the tip, the bottom apex, the two ends of the bottom arc and (180°) the end
+    // of the flat sector's bisector on the arc.
+    assert_eq!(s.mesh.corners().len(), 5);
     assert!(s
         .mesh
         .corners()
@@ -386,7 +386,7 @@ fn caps_stay_flat_under_semi_sharp_chaikin_edge_only() {
     assert_eq!(sharp.iter().filter(|&&x| x == 2.0).count(), 16);
     assert_eq!(
         sharp.iter().filter(|&&x| x == SHARPNESS_INFINITE).count(),
-        2 * 16 + 4 * 4 + 3 * 8 + 2
+        2 * 16 + 6 * 4 + 3 * 8
     );
     assert!(relative_residual(&s) <= 1e-10);
     for (count, worst) in cap_flatness(&s, &cap_planes(270.0, &[0.0, 3.6])) {

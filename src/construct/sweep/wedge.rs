@@ -19,8 +19,10 @@
 //! infinitely sharp corner: the two boundary meridians meet there at the wedge angle, and
 //! with caps three creases meet there. Catmull-Clark's corner rule maps the faces between a
 //! corner's two creases into the convex cone of their tangents, so a sector of 180° or more
-//! would fold at its apex: there the first edge of the bisector is an infinitely sharp crease
-//! too (ending in a dart), which splits the apex's span into two halves below 180°.
+//! folds at its apex: a flat sector's bisector is then an infinitely sharp crease too (to the
+//! arc, a crease, so no dart: OpenSubdiv's limit is inexact at darts), which splits the
+//! apex's span into two halves below 180°. A pole's sector of 180° or more still folds there
+//! (its first face in each half).
 //!
 //! *Meridian caps* (`"caps": "flat"`; both ends then have a sector). Each meridian plane is
 //! closed by one structured grid. Its boundary is the bottom sector's radial line (`k`
@@ -42,8 +44,8 @@
 //! refused.
 //!
 //! Where the column turns towards the axis at a crease ring (a cup's foot, a neck), the cap
-//! spans a reflex angle at that corner; the row edge from it inwards is then creased too
-//! (ending in a dart), for the same reason as at a sector's apex.
+//! spans a reflex angle at that corner; the grid line from it across the cap is then creased
+//! too (to the axis, a crease), for the same reason as at a sector's apex.
 //!
 //! Every edge where a flat cap meets the side or another cap is an infinitely sharp crease,
 //! and every vertex where three or more creases meet an infinitely sharp corner. A cap's
@@ -263,16 +265,20 @@ impl Wedge {
             quads.extend(half);
         }
         self.add_patch(quads, creased);
-        if angle >= PI {
+        if angle >= PI && creased {
             // The apex is an infinitely sharp corner, whose faces Catmull-Clark's corner rule
             // maps into the convex cone of its two crease tangents: a reflex (or straight)
-            // span folds. A crease from the apex along the bisector splits it in two.
-            let edge = (apex.min(mid[1]), apex.max(mid[1]));
-            self.creased.insert(edge);
-            self.parts.creases.push(Crease {
-                vertices: [apex, mid[1]],
-                sharpness: SHARPNESS_INFINITE,
-            });
+            // span folds. A crease along the whole bisector of a flat sector splits it in
+            // two and ends at the crease ring (a dart, where OpenSubdiv's limit is inexact,
+            // is avoided; a pole's sector has no crease to end at and is left as it is).
+            for e in mid.windows(2) {
+                if self.creased.insert((e[0].min(e[1]), e[0].max(e[1]))) {
+                    self.parts.creases.push(Crease {
+                        vertices: [e[0], e[1]],
+                        sharpness: SHARPNESS_INFINITE,
+                    });
+                }
+            }
         }
         Sector {
             apex,
@@ -363,8 +369,8 @@ impl Wedge {
         Ok(())
     }
 
-    /// Crease the grid edge from each corner (three creases) among `candidates` on the
-    /// boundary of the flat grid `ids` inwards, where the grid's span there is reflex: like
+    /// Crease the grid line from each corner (three creases) among `candidates` on the
+    /// boundary of the flat grid `ids` across it, where the grid's span there is reflex: like
     /// a sector's apex, the corner rule cannot fill more than 180° between two creases (a
     /// crease ring meeting a profile that turns towards the axis, a cup's foot or a neck).
     fn split_reflex_corners(&mut self, ids: &[Vec<u32>], candidates: &[u32]) {
@@ -403,14 +409,25 @@ impl Wedge {
                 let q = ids[qi][qj];
                 let rz = |w: u32| DVec2::new(at(w).truncate().length(), at(w).z);
                 if reflex_bisector(rz(v), rz(p), rz(n), rz(q)).is_some() {
-                    splits.push((v, q));
+                    // The whole grid line across the cap, so that the crease ends at a
+                    // crease (the axis) rather than in a dart.
+                    let (di, dj) = (qi as i64 - i as i64, qj as i64 - j as i64);
+                    let (mut a, mut b) = (i as i64, j as i64);
+                    loop {
+                        let (c, d) = (a + di, b + dj);
+                        splits.push((ids[a as usize][b as usize], ids[c as usize][d as usize]));
+                        (a, b) = (c, d);
+                        if !interior(a as usize, b as usize) {
+                            break;
+                        }
+                    }
                 }
             }
         }
-        for (v, q) in splits {
-            if self.creased.insert((v.min(q), v.max(q))) {
+        for (v, w) in splits {
+            if self.creased.insert((v.min(w), v.max(w))) {
                 self.parts.creases.push(Crease {
-                    vertices: [v, q],
+                    vertices: [v, w],
                     sharpness: SHARPNESS_INFINITE,
                 });
             }

@@ -408,7 +408,7 @@ impl Wedge {
                 };
                 let q = ids[qi][qj];
                 let rz = |w: u32| DVec2::new(at(w).truncate().length(), at(w).z);
-                if reflex_bisector(rz(v), rz(p), rz(n), rz(q)).is_some() {
+                if is_reflex(rz(v), rz(p), rz(n), rz(q)) {
                     // The whole grid line across the cap, so that the crease ends at a
                     // crease (the axis) rather than in a dart.
                     let (di, dj) = (qi as i64 - i as i64, qj as i64 - j as i64);
@@ -488,7 +488,7 @@ impl MeridianPlane {
                 match self.grid(a, u) {
                     Ok(grid) => {
                         let q = min_corner_sine(&grid);
-                        if best.as_ref().is_none_or(|b| q > b.0) {
+                        if best.as_ref().map_or(true, |b| q > b.0) {
                             best = Some((q, a, grid));
                         }
                     }
@@ -568,18 +568,18 @@ impl MeridianPlane {
     }
 }
 
-/// The unit bisector of the span at `v` from its neighbour `p` to its neighbour `n` that
-/// holds `q`, if that span is reflex (180° or more).
-fn reflex_bisector(v: DVec2, p: DVec2, n: DVec2, q: DVec2) -> Option<DVec2> {
+/// Whether the span at `v` from its neighbour `p` to its neighbour `n` that holds `q` is
+/// reflex (180° or more).
+fn is_reflex(v: DVec2, p: DVec2, n: DVec2, q: DVec2) -> bool {
     let turn = |w: DVec2| (w - v).y.atan2((w - v).x);
     let ccw = |from: f64, to: f64| (to - from).rem_euclid(TAU);
     let (tp, tn, tq) = (turn(p), turn(n), turn(q));
-    let (start, span) = if ccw(tp, tq) < ccw(tp, tn) {
-        (tp, ccw(tp, tn))
+    let span = if ccw(tp, tq) < ccw(tp, tn) {
+        ccw(tp, tn)
     } else {
-        (tn, ccw(tn, tp))
+        ccw(tn, tp)
     };
-    (span >= PI).then(|| DVec2::from_angle(start + span / 2.0))
+    span >= PI
 }
 
 /// The smallest sine of a quad corner angle in the grid (1 for rectangles, near 0 for

@@ -123,17 +123,18 @@ fn capped_vase_wedge_is_a_closed_solid_with_flat_caps() {
         r.valences
     );
     // Creases: 2 arcs of na, 4 sector radials of k, 2 columns of R − 1, the axis (R − 1),
-    // the crease ring (na).
-    assert_eq!(s.mesh.creases().len(), 3 * na + 4 * k + 3 * (rings - 1));
+    // the crease ring (na), and (270° ≥ 180°) each flat sector's bisector (k).
+    assert_eq!(s.mesh.creases().len(), 3 * na + 6 * k + 3 * (rings - 1));
     assert!(s
         .mesh
         .creases()
         .iter()
         .all(|c| c.sharpness == SHARPNESS_INFINITE));
-    // Corners where three creases meet: 2 apexes, the 4 ends of the two columns and the 2
-    // ends of the crease ring.
-    assert_eq!(crease_degrees(&s)[2], 8);
-    assert_eq!(s.mesh.corners().len(), 8);
+    // Corners where three creases meet: the 4 ends of the two columns, the 2 ends of the
+    // crease ring and the 2 ends of the sectors' bisectors on the arcs; four: the 2 apexes
+    // (270° ≥ 180°: with their bisectors).
+    assert_eq!(crease_degrees(&s)[2..], [8, 2]);
+    assert_eq!(s.mesh.corners().len(), 10);
     // Outward: the volume enclosed by the data-point quads is positive, 3/4 of the capped
     // full turn's (up to the polygon's chords: 16 sides over 270° or over 360°).
     let mut full = wedge(vase(), 360.0, Caps::Flat, np, na);
@@ -154,6 +155,13 @@ fn capped_vase_wedge_is_a_closed_solid_with_flat_caps() {
     }
 }
 
+/// Profile intervals each smooth pole's sector replaces on a profile of `np` intervals with
+/// a smooth pole at either end and no corner: `k` (its radial lines have `k` intervals),
+/// leaving at least one interval between the sectors' rings.
+fn pole_sector_depth(k: usize, np: usize) -> usize {
+    k.min((np - 1) / 2)
+}
+
 fn largest_valence(s: &SweptSurface) -> usize {
     *check(&s.mesh).valences.keys().max().unwrap()
 }
@@ -170,7 +178,7 @@ fn sphere_distance(s: &SweptSurface) -> f64 {
 #[test]
 fn open_sphere_wedge_has_sector_poles_with_corner_apexes() {
     let (np, na, k) = (12usize, 8usize, 2usize);
-    let rings = np - 1;
+    let rings = np + 1 - 2 * pole_sector_depth(k, np);
     let s = revolve(&wedge(semicircle(np), 90.0, Caps::Open, np, na)).unwrap();
     let r = check(&s.mesh);
     assert_eq!(r.num_faces, (rings - 1) * na + 2 * 2 * k * k);
@@ -208,28 +216,31 @@ fn open_sphere_wedge_has_sector_poles_with_corner_apexes() {
 #[test]
 fn capped_sphere_wedge_closes_with_two_flat_meridian_caps() {
     let (np, na, k) = (12usize, 16usize, 4usize);
-    let rings = np - 1;
+    let rings = np + 1 - 2 * pole_sector_depth(k, np);
     let s = revolve(&wedge(semicircle(np), 270.0, Caps::Flat, np, na)).unwrap();
     let r = check(&s.mesh);
+    // The meridian caps' best-shaped layout is bent round the column's ends by a = 1
+    // (`(k + a) × (R − 1 − 2a)` quads each).
+    let a = 1;
     assert_eq!(
         r.num_faces,
-        (rings - 1) * na + 2 * 2 * k * k + 2 * (rings - 1) * k
+        (rings - 1) * na + 2 * 2 * k * k + 2 * (k + a) * (rings - 1 - 2 * a)
     );
     assert_eq!(r.euler_characteristic, 2);
     assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
     assert!(largest_valence(&s) <= 5);
     // Creases: two columns continued by the pole sectors' radial lines to the apexes, and
-    // the axis; only the apexes have three.
+    // the axis (`R − 1 − 2a` intervals); only the apexes have three.
     assert_eq!(
         s.mesh.creases().len(),
-        2 * (rings - 1 + 2 * k) + (rings - 1)
+        2 * (rings - 1 + 2 * k) + (rings - 1 - 2 * a)
     );
     assert_eq!(crease_degrees(&s)[2], 2);
     assert_eq!(s.mesh.corners().len(), 2);
     assert!(relative_residual(&s) <= 1e-10);
     assert!(volume(&s) > 0.0);
     for (count, worst) in cap_flatness(&s, &cap_planes(270.0, &[])) {
-        assert_eq!(count, (rings - 1) * k);
+        assert_eq!(count, (k + a) * (rings - 1 - 2 * a));
         assert!(worst < 1e-12, "{worst}");
     }
 }
@@ -248,8 +259,9 @@ fn capped_half_cone_has_a_tip_and_a_flat_sector() {
     let r = check(&s.mesh);
     assert_eq!(r.euler_characteristic, 2);
     assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
-    // Corners: the tip, the bottom apex and the two ends of the bottom arc.
-    assert_eq!(s.mesh.corners().len(), 4);
+    // Corners: the tip, the bottom apex, the two ends of the bottom arc and (180°) the end
+    // of the flat sector's bisector on the arc.
+    assert_eq!(s.mesh.corners().len(), 5);
     assert!(s
         .mesh
         .corners()
@@ -374,7 +386,7 @@ fn caps_stay_flat_under_semi_sharp_chaikin_edge_only() {
     assert_eq!(sharp.iter().filter(|&&x| x == 2.0).count(), 16);
     assert_eq!(
         sharp.iter().filter(|&&x| x == SHARPNESS_INFINITE).count(),
-        2 * 16 + 4 * 4 + 3 * 8
+        2 * 16 + 6 * 4 + 3 * 8
     );
     assert!(relative_residual(&s) <= 1e-10);
     for (count, worst) in cap_flatness(&s, &cap_planes(270.0, &[0.0, 3.6])) {

@@ -410,25 +410,28 @@ impl RevolveInput {
         place_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth), |s| {
             profile.point(s)
         });
-        // Samples each end's cap or tip replaces: one (the pole) for a tip and for a partial
-        // turn's sector; a full turn's smooth pole several, so that its grid cap's cells are
-        // about as large as the faces around it (`grid_cap_depth`).
+        // Samples each end's cap or tip replaces: one (the pole) for a tip; a smooth pole
+        // several, so that its cap's cells are about as large as the faces around it: a full
+        // turn's grid cap `grid_cap_depth` (its `k / 2` squares), a partial turn's sector `k`
+        // (its radial lines have `k` intervals), either bounded by `cap_depths`.
         let mut depth = ends.map(|e| usize::from(e != GridEnd::Open));
-        if self.full_turn() {
-            let breaks: Vec<usize> = (0..samples.len())
-                .filter(|&i| i == 0 || i + 1 == samples.len() || samples[i].corner)
-                .collect();
-            let runs: Vec<usize> = breaks.windows(2).map(|w| w[1] - w[0]).collect();
-            let caps = cap_depths(
-                ends.map(|e| e == GridEnd::Smooth),
-                ends.map(|e| matches!(e, GridEnd::Tip(_))),
-                &runs,
-                grid_cap_depth(na),
-            );
-            for e in 0..2 {
-                if ends[e] == GridEnd::Smooth {
-                    depth[e] = caps[e];
-                }
+        let breaks: Vec<usize> = (0..samples.len())
+            .filter(|&i| i == 0 || i + 1 == samples.len() || samples[i].corner)
+            .collect();
+        let runs: Vec<usize> = breaks.windows(2).map(|w| w[1] - w[0]).collect();
+        let caps = cap_depths(
+            ends.map(|e| e == GridEnd::Smooth),
+            ends.map(|e| matches!(e, GridEnd::Tip(_))),
+            &runs,
+            if self.full_turn() {
+                grid_cap_depth(na)
+            } else {
+                na / 4
+            },
+        );
+        for e in 0..2 {
+            if ends[e] == GridEnd::Smooth {
+                depth[e] = caps[e];
             }
         }
         samples.truncate(samples.len() - depth[1]);

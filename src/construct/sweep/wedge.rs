@@ -13,9 +13,16 @@
 //! most 180° no quad has a reflex angle. Interior vertices come from transfinite (Coons)
 //! interpolation in the unit sector, as a relative radius ρ and an angle θ; a flat cap
 //! scales ρ by the ring's radius in the ring's plane, a pole maps `(ρ, θ)` onto the surface
-//! through [`cap_point`] (the same placement as a full turn's pole cap). A pole's apex is an
+//! through [`cap_point`] (the same placement as a full turn's pole cap), and replaces up to
+//! `k` profile intervals (its radial lines have `k` intervals; see `RevolveInput::grid`), so
+//! that its cells are about as large as the side's faces. A pole's apex is an
 //! infinitely sharp corner: the two boundary meridians meet there at the wedge angle, and
-//! with caps three creases meet there.
+//! with caps three creases meet there. Catmull-Clark's corner rule maps the faces between a
+//! corner's two creases into the convex cone of their tangents, so a sector of 180° or more
+//! folds at its apex: a flat sector's bisector is then an infinitely sharp crease too (to the
+//! arc, a crease, so no dart: OpenSubdiv's limit is inexact at darts), which splits the
+//! apex's span into two halves below 180°. A pole's sector of 180° or more still folds there
+//! (its first face in each half).
 //!
 //! *Meridian caps* (`"caps": "flat"`; both ends then have a sector). Each meridian plane is
 //! closed by one structured grid. Its boundary is the bottom sector's radial line (`k`
@@ -30,9 +37,15 @@
 //! strictly (rows are then horizontal); otherwise at a blend of their running-maximum height
 //! and a small share (2%, then 10%, 30%, 100%) of its chord-length fraction, which keeps them
 //! strictly rising and the rows nearly horizontal (a flat foot or a flat top, say). Interior vertices come from Coons
-//! interpolation in the `(r, z)` plane; the first layout that does not fold is taken, and a
+//! interpolation in the `(r, z)` plane; of the layouts that do not fold the best-shaped is
+//! taken (the largest smallest sine of a quad's corner angle: a flat foot continuing the
+//! bottom radial line would otherwise leave slivers between it and the first rows), and a
 //! profile for which none exists (a hollow glass whose bowl and foot both reach the axis) is
 //! refused.
+//!
+//! Where the column turns towards the axis at a crease ring (a cup's foot, a neck), the cap
+//! spans a reflex angle at that corner; the grid line from it across the cap is then creased
+//! too (to the axis, a crease), for the same reason as at a sector's apex.
 //!
 //! Every edge where a flat cap meets the side or another cap is an infinitely sharp crease,
 //! and every vertex where three or more creases meet an infinitely sharp corner. A cap's
@@ -40,7 +53,7 @@
 //! control points, and their fit is planar too, so the caps are flat in the limit.
 
 use std::collections::HashSet;
-use std::f64::consts::TAU;
+use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
@@ -252,6 +265,21 @@ impl Wedge {
             quads.extend(half);
         }
         self.add_patch(quads, creased);
+        if angle >= PI && creased {
+            // The apex is an infinitely sharp corner, whose faces Catmull-Clark's corner rule
+            // maps into the convex cone of its two crease tangents: a reflex (or straight)
+            // span folds. A crease along the whole bisector of a flat sector splits it in
+            // two and ends at the crease ring (a dart, where OpenSubdiv's limit is inexact,
+            // is avoided; a pole's sector has no crease to end at and is left as it is).
+            for e in mid.windows(2) {
+                if self.creased.insert((e[0].min(e[1]), e[0].max(e[1]))) {
+                    self.parts.creases.push(Crease {
+                        vertices: [e[0], e[1]],
+                        sharpness: SHARPNESS_INFINITE,
+                    });
+                }
+            }
+        }
         Sector {
             apex,
             radials: [first, last],
@@ -337,7 +365,73 @@ impl Wedge {
             }
         }
         self.add_patch(grid_quads(&ids), true);
+        self.split_reflex_corners(&ids, &column[1..rows]);
         Ok(())
+    }
+
+    /// Crease the grid line from each corner (three creases) among `candidates` on the
+    /// boundary of the flat grid `ids` across it, where the grid's span there is reflex: like
+    /// a sector's apex, the corner rule cannot fill more than 180° between two creases (a
+    /// crease ring meeting a profile that turns towards the axis, a cup's foot or a neck).
+    fn split_reflex_corners(&mut self, ids: &[Vec<u32>], candidates: &[u32]) {
+        let mut degree = std::collections::HashMap::new();
+        for &(a, b) in &self.creased {
+            *degree.entry(a).or_insert(0usize) += 1;
+            *degree.entry(b).or_insert(0usize) += 1;
+        }
+        let (n1, n2) = (ids.len() - 1, ids[0].len() - 1);
+        let at = |v: u32| self.parts.positions[v as usize];
+        let mut splits = Vec::new();
+        for i in 0..=n1 {
+            for j in 0..=n2 {
+                let v = ids[i][j];
+                let interior = |i: usize, j: usize| i > 0 && i < n1 && j > 0 && j < n2;
+                if !candidates.contains(&v) || degree.get(&v).copied().unwrap_or(0) < 3 {
+                    continue;
+                }
+                // The boundary vertex's grid neighbours: two on the boundary, one inside.
+                let near: Vec<(usize, usize)> = [(1, 0), (0, 1), (-1, 0), (0, -1)]
+                    .iter()
+                    .map(|&(di, dj)| (i as i64 + di, j as i64 + dj))
+                    .filter(|&(a, b)| a >= 0 && b >= 0 && a <= n1 as i64 && b <= n2 as i64)
+                    .map(|(a, b)| (a as usize, b as usize))
+                    .collect();
+                let inside: Vec<&(usize, usize)> =
+                    near.iter().filter(|&&(a, b)| interior(a, b)).collect();
+                let rim: Vec<u32> = near
+                    .iter()
+                    .filter(|&&(a, b)| !interior(a, b))
+                    .map(|&(a, b)| ids[a][b])
+                    .collect();
+                let (&[&(qi, qj)], &[p, n]) = (inside.as_slice(), rim.as_slice()) else {
+                    continue;
+                };
+                let q = ids[qi][qj];
+                let rz = |w: u32| DVec2::new(at(w).truncate().length(), at(w).z);
+                if is_reflex(rz(v), rz(p), rz(n), rz(q)) {
+                    // The whole grid line across the cap, so that the crease ends at a
+                    // crease (the axis) rather than in a dart.
+                    let (di, dj) = (qi as i64 - i as i64, qj as i64 - j as i64);
+                    let (mut a, mut b) = (i as i64, j as i64);
+                    loop {
+                        let (c, d) = (a + di, b + dj);
+                        splits.push((ids[a as usize][b as usize], ids[c as usize][d as usize]));
+                        (a, b) = (c, d);
+                        if !interior(a as usize, b as usize) {
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+        for (v, w) in splits {
+            if self.creased.insert((v.min(w), v.max(w))) {
+                self.parts.creases.push(Crease {
+                    vertices: [v, w],
+                    sharpness: SHARPNESS_INFINITE,
+                });
+            }
+        }
     }
 
     /// Tag every vertex with three or more crease edges (and each of `extra`) as an
@@ -376,7 +470,7 @@ struct MeridianPlane {
 }
 
 impl MeridianPlane {
-    /// The first unfolded layout: split `a = 0, 1, ...` (at most [`MAX_SPLITS`] values,
+    /// The best-shaped unfolded layout ([`min_corner_sine`]): split `a = 0, 1, ...` (at most [`MAX_SPLITS`] values,
     /// evenly spread, so that a refusal stays cheap), and for each the axis spacings of
     /// [`MeridianPlane::axis_spacings`].
     fn choose(&self) -> Result<(usize, Vec<Vec<DVec2>>)> {
@@ -388,17 +482,26 @@ impl MeridianPlane {
             (0..=MAX_SPLITS).map(|t| t * last / MAX_SPLITS).collect()
         };
         let mut first_error = None;
+        let mut best: Option<(f64, usize, Vec<Vec<DVec2>>)> = None;
         for a in splits {
             for u in self.axis_spacings(a) {
                 match self.grid(a, u) {
-                    Ok(grid) => return Ok((a, grid)),
+                    Ok(grid) => {
+                        let q = min_corner_sine(&grid);
+                        if best.as_ref().map_or(true, |b| q > b.0) {
+                            best = Some((q, a, grid));
+                        }
+                    }
                     Err(e) => {
                         first_error.get_or_insert(e);
                     }
                 }
             }
         }
-        Err(first_error.expect("at least one layout is tried"))
+        match best {
+            Some((_, a, grid)) => Ok((a, grid)),
+            None => Err(first_error.expect("at least one layout is tried")),
+        }
     }
 
     /// Candidate axis spacings (fractions from the bottom apex to the top apex) for split
@@ -463,6 +566,43 @@ impl MeridianPlane {
         check_unfolded(&grid)?;
         Ok(grid)
     }
+}
+
+/// Whether the span at `v` from its neighbour `p` to its neighbour `n` that holds `q` is
+/// reflex (180° or more).
+fn is_reflex(v: DVec2, p: DVec2, n: DVec2, q: DVec2) -> bool {
+    let turn = |w: DVec2| (w - v).y.atan2((w - v).x);
+    let ccw = |from: f64, to: f64| (to - from).rem_euclid(TAU);
+    let (tp, tn, tq) = (turn(p), turn(n), turn(q));
+    let span = if ccw(tp, tq) < ccw(tp, tn) {
+        ccw(tp, tn)
+    } else {
+        ccw(tn, tp)
+    };
+    span >= PI
+}
+
+/// The smallest sine of a quad corner angle in the grid (1 for rectangles, near 0 for
+/// slivers), signed by the orientation of the whole grid.
+fn min_corner_sine(grid: &[Vec<DVec2>]) -> f64 {
+    let (a, b) = (grid.len() - 1, grid[0].len() - 1);
+    let sines: Vec<f64> = (0..a)
+        .flat_map(|i| (0..b).map(move |j| (i, j)))
+        .flat_map(|(i, j)| {
+            let q = [
+                grid[i][j],
+                grid[i][j + 1],
+                grid[i + 1][j + 1],
+                grid[i + 1][j],
+            ];
+            (0..4).map(move |c| {
+                let (p, n) = (q[(c + 3) % 4] - q[c], q[(c + 1) % 4] - q[c]);
+                n.perp_dot(p) / (n.length() * p.length()).max(f64::MIN_POSITIVE)
+            })
+        })
+        .collect();
+    let sign = sines.iter().sum::<f64>().signum();
+    sines.iter().map(|s| s * sign).fold(f64::INFINITY, f64::min)
 }
 
 /// Error if a quad of the meridian cap grid folds: its signed area has the wrong sign, or

@@ -3,6 +3,9 @@
 //! fold check, `eval::folds`), stay close to their design surfaces between the data points
 //! and are about as fair as them (`construct::design`).
 
+#[path = "support/random_profile.rs"]
+mod random_profile;
+
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
@@ -12,6 +15,7 @@ use profsubd::construct::profile::{build, shapes::ellipsoid, ProfileInput};
 use profsubd::construct::sweep::revolve::RevolveInput;
 use profsubd::construct::sweep::sweep::SweepInput;
 use profsubd::construct::sweep::{revolve, sweep};
+use random_profile::RandomProfiles;
 
 /// Samplings from 16 × 8 to 128 × 64 (around × along).
 const SAMPLINGS: [(usize, usize); 4] = [(16, 8), (32, 16), (64, 32), (128, 64)];
@@ -141,31 +145,16 @@ fn bottles_with_flat_bases_do_not_fold() {
 fn random_full_turn_revolutions_do_not_fold() {
     // The generator of `sweep_wedge`'s random-profile test, full turns only, fitted: every
     // profile that is accepted gives a limit surface without folds.
-    let mut seed: u64 = 12345;
-    let mut rnd = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % 1_000_000) as f64 / 1_000_000.0
-    };
+    let mut random = RandomProfiles::new();
     let mut built = 0;
     for _ in 0..60 {
-        let n = 2 + (rnd() * 6.0) as usize;
-        let mut pts: Vec<[f64; 2]> = (0..n)
-            .map(|i| [0.2 + 2.0 * rnd(), i as f64 + 0.8 * rnd()])
-            .collect();
-        if rnd() < 0.4 {
-            pts[0][0] = 0.0;
-        }
-        if rnd() < 0.4 {
-            pts[n - 1][0] = 0.0;
-        }
+        let pts = random.profile();
         let mut input = RevolveInput::new(pts);
-        if rnd() < 0.5 {
+        if random.next() < 0.5 {
             input.caps = profsubd::construct::profile::Caps::Flat;
         }
-        input.samples_around = 4 * (2 + (rnd() * 6.0) as usize);
-        input.samples_profile = 4 + (rnd() * 28.0) as usize;
+        input.samples_around = 4 * (2 + (random.next() * 6.0) as usize);
+        input.samples_profile = 4 + (random.next() * 28.0) as usize;
         let Ok(s) = revolve(&input) else { continue };
         let r = s.surface_report().unwrap();
         assert_eq!(r.folded_faces, 0, "{input:?}: {r:?}");

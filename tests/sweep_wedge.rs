@@ -3,6 +3,8 @@
 //! characteristic, orientation, tags, the interpolation residual of the exact limit at every
 //! control vertex, and that the limit surface of every flat cap lies in its plane.
 
+#[path = "support/random_profile.rs"]
+mod random_profile;
 #[path = "support/swept.rs"]
 mod swept;
 
@@ -16,6 +18,7 @@ use profsubd::construct::sweep::SweptSurface;
 use profsubd::mesh::validate::check;
 use profsubd::mesh::SHARPNESS_INFINITE;
 use profsubd::Error;
+use random_profile::RandomProfiles;
 use swept::{crease_degrees, limit_samples, relative_residual};
 
 fn semicircle(n: usize) -> Vec<[f64; 2]> {
@@ -431,32 +434,22 @@ fn random_profiles_give_closed_solids_or_a_specific_refusal() {
     // hollow shell), angles from 30° to a full turn, with and without caps: the cage is a
     // consistently oriented manifold, closed with Euler characteristic 2 whenever capped, or
     // the input is refused with InvalidArgument; nothing panics.
-    let mut seed: u64 = 12345;
-    let mut rnd = || {
-        seed ^= seed << 13;
-        seed ^= seed >> 7;
-        seed ^= seed << 17;
-        (seed % 1_000_000) as f64 / 1_000_000.0
-    };
+    let mut random = RandomProfiles::new();
     let mut built = 0;
     for _ in 0..400 {
-        let n = 2 + (rnd() * 6.0) as usize;
-        let mut pts: Vec<[f64; 2]> = (0..n)
-            .map(|i| [0.2 + 2.0 * rnd(), i as f64 + 0.8 * rnd()])
-            .collect();
-        if rnd() < 0.4 {
-            pts[0][0] = 0.0;
+        let mut pts = random.profile();
+        let n = pts.len();
+        if random.next() < 0.3 {
+            pts[n - 1][1] = pts[0][1] + 0.5 * random.next();
         }
-        if rnd() < 0.4 {
-            pts[n - 1][0] = 0.0;
-        }
-        if rnd() < 0.3 {
-            pts[n - 1][1] = pts[0][1] + 0.5 * rnd();
-        }
-        let angle = [30.0, 90.0, 180.0, 270.0, 359.0, 360.0][(rnd() * 6.0) as usize];
-        let caps = if rnd() < 0.7 { Caps::Flat } else { Caps::Open };
-        let na = 4 * (1 + (rnd() * 6.0) as usize);
-        let np = 2 + (rnd() * 20.0) as usize;
+        let angle = [30.0, 90.0, 180.0, 270.0, 359.0, 360.0][(random.next() * 6.0) as usize];
+        let caps = if random.next() < 0.7 {
+            Caps::Flat
+        } else {
+            Caps::Open
+        };
+        let na = 4 * (1 + (random.next() * 6.0) as usize);
+        let np = 2 + (random.next() * 20.0) as usize;
         let input = wedge(pts.clone(), angle, caps, np, na);
         let parts = match input.mesh_parts() {
             Ok(parts) => parts,

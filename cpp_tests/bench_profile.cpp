@@ -70,13 +70,12 @@ int main() {
     profsubd_options *raw = nullptr;
     profsubd_options_new(&raw);
     OptionsPtr options(raw);
-    profsubd_options_set_around(raw, 128);
-    profsubd_options_set_along(raw, 64);
+    profsubd_options_set_samples(raw, 64, 128);
 
     double t_profsubd = 1e300;
-    profsubd_profile *model = nullptr;
+    profsubd_fitted *model = nullptr;
     for (int rep = 0; rep < 3; ++rep) {
-        profsubd_profile_free(model);
+        profsubd_fitted_free(model);
         model = nullptr;
         Clock::time_point t0 = Clock::now();
         profsubd_status st = profsubd_profile_build(&curves, raw, &model);
@@ -86,13 +85,13 @@ int main() {
         }
     }
     profsubd_mesh *mesh = nullptr;
-    profsubd_profile_get_mesh(model, &mesh);
+    profsubd_fitted_get_mesh(model, &mesh);
     MeshPtr owned(mesh);
     size_t needed = 0;
-    profsubd_profile_get_targets(model, nullptr, 0, &needed);
+    profsubd_fitted_get_targets(model, nullptr, 0, &needed);
     std::vector<double> targets(needed);
-    profsubd_profile_get_targets(model, targets.data(), needed, &needed);
-    profsubd_profile_free(model);
+    profsubd_fitted_get_targets(model, targets.data(), needed, &needed);
+    profsubd_fitted_free(model);
     CapiMesh capi;
     std::string err = read_capi_mesh(mesh, &capi);
     if (!ck.check(err.empty(), "read back: " + err)) {

@@ -178,8 +178,7 @@ bool build_capi(Checker &ck, const std::string &name, const std::vector<double> 
     profsubd_options *raw = nullptr;
     profsubd_options_new(&raw);
     OptionsPtr options(raw);
-    profsubd_options_set_around(raw, around);
-    profsubd_options_set_along(raw, along);
+    profsubd_options_set_samples(raw, along, around);
     profsubd_options_set_crease_sharpness(raw, crease_sharpness);
     if (subdiv.boundary >= 0) {
         ck.equal(profsubd_options_set_boundary(raw, subdiv.boundary), PROFSUBD_OK, "set boundary");
@@ -187,19 +186,19 @@ bool build_capi(Checker &ck, const std::string &name, const std::vector<double> 
     if (subdiv.crease >= 0) {
         ck.equal(profsubd_options_set_crease_method(raw, subdiv.crease), PROFSUBD_OK, "set crease method");
     }
-    profsubd_profile *model = nullptr;
+    profsubd_fitted *model = nullptr;
     profsubd_status st = profsubd_profile_build(&curves, raw, &model);
     if (!ck.check(st == PROFSUBD_OK, "profsubd_profile_build: " + describe_status(st))) {
         return false;
     }
     profsubd_mesh *mesh = nullptr;
-    profsubd_profile_get_mesh(model, &mesh);
+    profsubd_fitted_get_mesh(model, &mesh);
     out->mesh.reset(mesh);
     size_t needed = 0;
-    profsubd_profile_get_targets(model, nullptr, 0, &needed);
+    profsubd_fitted_get_targets(model, nullptr, 0, &needed);
     out->targets.assign(needed, 0.0);
-    profsubd_profile_get_targets(model, out->targets.data(), needed, &needed);
-    profsubd_profile_free(model);
+    profsubd_fitted_get_targets(model, out->targets.data(), needed, &needed);
+    profsubd_fitted_free(model);
     CapiMesh capi;
     std::string err = read_capi_mesh(mesh, &capi);
     if (!ck.check(err.empty(), "read back: " + err)) {
@@ -246,13 +245,46 @@ void check_bad_options(Checker &ck, const std::vector<double> &open_curve) {
     curves.c1 = curves.c2 = open_curve.data();
     curves.c1_points = curves.c2_points = open_curve.size() / 2;
     profsubd_options_set_boundary(raw, PROFSUBD_BOUNDARY_NONE);
-    profsubd_profile *model = nullptr;
+    profsubd_fitted *model = nullptr;
     ck.equal(profsubd_profile_build(&curves, raw, &model), PROFSUBD_ERROR_INVALID_ARGUMENT,
              "boundary none with an open end");
     ck.check(model == nullptr, "no model");
     ck.check(std::string(profsubd_last_error_message()).find("boundary interpolation none") !=
                  std::string::npos,
              std::string("message names the rule: ") + profsubd_last_error_message());
+}
+
+// The built-in model through the C API, in one call and from its curves and sampling with
+// the default settings: both are the bundled bottle example, position for position (its OBJ
+// file holds the shortest round-trip decimals, read back exactly).
+void check_default_model(Checker &ck, const Model &bottle) {
+    ck.set_context("default model");
+    profsubd_profile_curves curves{};
+    curves.struct_size = sizeof curves;
+    uint32_t along = 0, around = 0;
+    ck.equal(profsubd_profile_default_curves(&curves, &along, &around), PROFSUBD_OK,
+             "profsubd_profile_default_curves");
+    ck.equal(along, uint32_t(20), "rings along");
+    ck.equal(around, uint32_t(16), "meridians around");
+    profsubd_options *raw = nullptr;
+    profsubd_options_new(&raw);
+    OptionsPtr options(raw);
+    profsubd_options_set_samples(raw, along, around);
+    profsubd_fitted *from_curves = nullptr, *one_call = nullptr;
+    ck.equal(profsubd_profile_build(&curves, raw, &from_curves), PROFSUBD_OK, "build from curves");
+    ck.equal(profsubd_profile_build_default(nullptr, &one_call), PROFSUBD_OK, "build in one call");
+    for (profsubd_fitted *f : {from_curves, one_call}) {
+        profsubd_mesh *mesh = nullptr;
+        if (f == nullptr || !ck.check(profsubd_fitted_get_mesh(f, &mesh) == PROFSUBD_OK, "mesh")) {
+            continue;
+        }
+        MeshPtr owned(mesh);
+        CapiMesh capi;
+        std::string err = read_capi_mesh(mesh, &capi);
+        ck.check(err.empty(), "read back: " + err);
+        ck.check(capi.positions == bottle.shape.positions, "the bottle example's positions");
+        profsubd_fitted_free(f);
+    }
 }
 
 std::vector<double> sampled(int n, double (*w)(double), double z0, double z1) {
@@ -336,6 +368,11 @@ int main() {
         }
     }
     check_bad_options(ck, vase);
+    for (const Model &m : models) {
+        if (m.name == "bottle") {
+            check_default_model(ck, m);
+        }
+    }
     double worst_dart = 0;
     for (Model &m : models) {
         check_model(ck, m, &worst_dart);

@@ -139,27 +139,27 @@ void check_flat_caps(Checker &ck, const Model &m, const std::vector<Plane> &plan
 }
 
 struct SweptDeleter {
-    void operator()(profsubd_swept *s) const { profsubd_swept_free(s); }
+    void operator()(profsubd_fitted *s) const { profsubd_fitted_free(s); }
 };
 
 // Read a C API result back as a model (mesh through the C API, then the targets).
-bool take_result(Checker &ck, const std::string &name, profsubd_status st, profsubd_swept *raw,
+bool take_result(Checker &ck, const std::string &name, profsubd_status st, profsubd_fitted *raw,
                  Model *out) {
-    std::unique_ptr<profsubd_swept, SweptDeleter> swept(raw);
+    std::unique_ptr<profsubd_fitted, SweptDeleter> swept(raw);
     ck.set_context(name);
     if (!ck.check(st == PROFSUBD_OK, "build: " + describe_status(st))) {
         return false;
     }
     profsubd_mesh *mesh_raw = nullptr;
-    if (!ck.check(profsubd_swept_get_mesh(swept.get(), &mesh_raw) == PROFSUBD_OK, "get mesh")) {
+    if (!ck.check(profsubd_fitted_get_mesh(swept.get(), &mesh_raw) == PROFSUBD_OK, "get mesh")) {
         return false;
     }
     MeshPtr mesh(mesh_raw);
     size_t needed = 0;
-    ck.equal(profsubd_swept_get_targets(swept.get(), nullptr, 0, &needed),
+    ck.equal(profsubd_fitted_get_targets(swept.get(), nullptr, 0, &needed),
              PROFSUBD_ERROR_BUFFER_TOO_SMALL, "targets size query");
     out->targets.assign(needed, 0.0);
-    ck.equal(profsubd_swept_get_targets(swept.get(), out->targets.data(), needed, &needed),
+    ck.equal(profsubd_fitted_get_targets(swept.get(), out->targets.data(), needed, &needed),
              PROFSUBD_OK, "targets copy-out");
     CapiMesh capi;
     std::string err = read_capi_mesh(mesh.get(), &capi);
@@ -178,7 +178,7 @@ bool take_result(Checker &ck, const std::string &name, profsubd_status st, profs
 
 // One model built under explicit subdivision options; checks that its OBJ records them.
 bool with_options(Checker &ck, const std::string &name, Sdc::Options::VtxBoundaryInterpolation boundary,
-                  Sdc::Options::CreasingMethod crease, profsubd_status st, profsubd_swept *raw,
+                  Sdc::Options::CreasingMethod crease, profsubd_status st, profsubd_fitted *raw,
                   Model *out) {
     if (!take_result(ck, name, st, raw, out)) {
         return false;
@@ -247,13 +247,13 @@ int main() {
         semicircle.push_back(1.5 * std::sin(t));
     }
     const std::vector<double> cylinder = {1, 0, 1, 2}, cone = {1, 0, 0, 2};
-    profsubd_options_set_sweep_samples(raw_options, 16, 32);
+    profsubd_options_set_samples(raw_options, 16, 32);
     struct Rev {
         const char *name;
         const std::vector<double> *profile;
     } revs[] = {{"sphere 16x32", &semicircle}, {"cylinder 16x32", &cylinder}, {"cone 16x32", &cone}};
     for (const Rev &r : revs) {
-        profsubd_swept *s = nullptr;
+        profsubd_fitted *s = nullptr;
         profsubd_status st = profsubd_revolve(r.profile->data(), r.profile->size() / 2, raw_options, &s);
         Model m;
         if (take_result(ck, r.name, st, s, &m)) {
@@ -275,10 +275,10 @@ int main() {
         {"capped cylinder (full turn, flat discs)", &cylinder, 360, PROFSUBD_CAPS_FLAT, 32},
     };
     for (const Wedge &w : wedges) {
-        profsubd_options_set_sweep_samples(raw_options, 16, w.samples_around);
+        profsubd_options_set_samples(raw_options, 16, w.samples_around);
         profsubd_options_set_revolve_angle(raw_options, w.angle);
         profsubd_options_set_caps(raw_options, w.caps);
-        profsubd_swept *s = nullptr;
+        profsubd_fitted *s = nullptr;
         profsubd_status st = profsubd_revolve(w.profile->data(), w.profile->size() / 2, raw_options, &s);
         Model m;
         if (take_result(ck, w.name, st, s, &m)) {
@@ -288,9 +288,9 @@ int main() {
     // A thin-walled cup: its meridian caps bend around the column's ends.
     const std::vector<double> cup = {0, 0, 1, 0, 1, 2, 0.9, 2, 0.9, 0.2, 0, 0.2};
     profsubd_options_set_interpolation(raw_options, 1);
-    profsubd_options_set_sweep_samples(raw_options, 24, 8);
+    profsubd_options_set_samples(raw_options, 24, 8);
     profsubd_options_set_revolve_angle(raw_options, 180.0);
-    profsubd_swept *cup_result = nullptr;
+    profsubd_fitted *cup_result = nullptr;
     profsubd_status cup_status =
         profsubd_revolve(cup.data(), cup.size() / 2, raw_options, &cup_result);
     Model cup_model;
@@ -302,7 +302,7 @@ int main() {
     // vertices on the infinitely sharp cap creases, under edge-only and uniform or Chaikin.
     const std::vector<double> vase = {1.0, 0.0, 1.4, 0.8, 1.3, 2.0, 0.9, 3.0, 0.9, 3.6};
     const uint32_t vase_corner = 2;
-    profsubd_options_set_sweep_samples(raw_options, 8, 16);
+    profsubd_options_set_samples(raw_options, 8, 16);
     profsubd_options_set_revolve_angle(raw_options, 270.0);
     profsubd_options_set_sharp_angle(raw_options, 60.0);
     profsubd_options_set_sweep_corners(raw_options, &vase_corner, 1, nullptr, 0);
@@ -311,7 +311,7 @@ int main() {
     for (int chaikin = 0; chaikin < 2; ++chaikin) {
         profsubd_options_set_crease_method(raw_options,
                                            chaikin ? PROFSUBD_CREASE_CHAIKIN : PROFSUBD_CREASE_UNIFORM);
-        profsubd_swept *vase_result = nullptr;
+        profsubd_fitted *vase_result = nullptr;
         profsubd_status vase_status =
             profsubd_revolve(vase.data(), vase.size() / 2, raw_options, &vase_result);
         Model vase_model;
@@ -349,9 +349,9 @@ int main() {
         {"L-shaped square rail", &square, &ell, 0, 8, 16},
     };
     for (const Sw &w : sweeps) {
-        profsubd_options_set_sweep_samples(raw_options, w.samples_profile, w.samples_trajectory);
+        profsubd_options_set_samples(raw_options, w.samples_profile, w.samples_trajectory);
         profsubd_options_set_sweep_closed(raw_options, 1, w.closed_trajectory);
-        profsubd_swept *s = nullptr;
+        profsubd_fitted *s = nullptr;
         profsubd_status st = profsubd_sweep(w.profile->data(), w.profile->size() / 2,
                                             w.trajectory->data(), w.trajectory->size() / 3,
                                             raw_options, &s);
@@ -369,7 +369,7 @@ int main() {
     const uint32_t bowl_corner = 2, arc_corner = 1, bend_corner = 1;
     profsubd_options_set_sweep_corners(raw_options, &bowl_corner, 1, nullptr, 0);
     profsubd_options_set_revolve_angle(raw_options, 270.0);
-    profsubd_options_set_sweep_samples(raw_options, 8, 12);
+    profsubd_options_set_samples(raw_options, 8, 12);
     profsubd_options_set_crease_sharpness(raw_options, 2.0f);
     std::vector<Model> corner_models;
     for (int k = 0; k < 2; ++k) {
@@ -381,7 +381,7 @@ int main() {
         O::VtxBoundaryInterpolation rule = edge_only ? O::VTX_BOUNDARY_EDGE_ONLY : O::VTX_BOUNDARY_EDGE_AND_CORNER;
         O::CreasingMethod method = edge_only ? O::CREASE_UNIFORM : O::CREASE_CHAIKIN;
         std::string suffix = edge_only ? ", edge-only, semi-sharp" : ", edge-and-corner, chaikin, semi-sharp";
-        profsubd_swept *s = nullptr;
+        profsubd_fitted *s = nullptr;
         profsubd_options_set_sweep_corners(raw_options, &bowl_corner, 1, nullptr, 0);
         profsubd_status st = profsubd_revolve(bowl.data(), bowl.size() / 2, raw_options, &s);
         Model m;
@@ -398,10 +398,10 @@ int main() {
     }
     profsubd_options_set_sweep_corners(raw_options, nullptr, 0, nullptr, 0);
     profsubd_options_set_sweep_closed(raw_options, 1, 1);
-    profsubd_options_set_sweep_samples(raw_options, 8, 48);
+    profsubd_options_set_samples(raw_options, 8, 48);
     profsubd_options_set_crease_sharpness(raw_options, 1.5f);
     profsubd_options_set_boundary(raw_options, PROFSUBD_BOUNDARY_NONE);
-    profsubd_swept *tube = nullptr;
+    profsubd_fitted *tube = nullptr;
     profsubd_status st = profsubd_sweep(square.data(), square.size() / 2, wavy.data(), wavy.size() / 3,
                                         raw_options, &tube);
     Model m;
@@ -411,7 +411,7 @@ int main() {
     }
     ck.set_context("boundary none on an open ribbon");
     profsubd_options_set_sweep_closed(raw_options, 0, 0);
-    profsubd_swept *refused = nullptr;
+    profsubd_fitted *refused = nullptr;
     ck.equal(profsubd_sweep(arc.data(), arc.size() / 2, bend.data(), bend.size() / 3, raw_options, &refused),
              PROFSUBD_ERROR_INVALID_ARGUMENT, "refused");
     ck.check(refused == nullptr, "no result");

@@ -292,6 +292,13 @@ typedef enum profsubd_osd_hazard {
 typedef struct profsubd_evaluator profsubd_evaluator;
 
 /**
+ * A fitted construction (opaque): made by `profsubd_profile_build`,
+ * `profsubd_profile_build_default`, `profsubd_revolve` or `profsubd_sweep`; released with
+ * `profsubd_fitted_free`. Immutable: usable from several threads at once.
+ */
+typedef struct profsubd_fitted profsubd_fitted;
+
+/**
  * The result of `profsubd_check_folds` (opaque, immutable, safe to share between threads).
  * Release with `profsubd_fold_report_free`.
  */
@@ -311,24 +318,12 @@ typedef struct profsubd_mesh profsubd_mesh;
 typedef struct profsubd_options profsubd_options;
 
 /**
- * A built profile model (opaque): the fitted mesh and the data points. Release with
- * `profsubd_profile_free`.
- */
-typedef struct profsubd_profile profsubd_profile;
-
-/**
  * A table of stencils (opaque, immutable, safe to share between threads): row `i` is a
  * weighted sum of control vertices. Create with `profsubd_limit_stencils_new`, release with
  * `profsubd_stencil_table_free`. Stored in compressed sparse rows: row `i` has the entries
  * `offsets[i] .. offsets[i + 1] - 1` of `indices` (control vertices) and `weights`.
  */
 typedef struct profsubd_stencil_table profsubd_stencil_table;
-
-/**
- * A built revolution or sweep (opaque): the fitted mesh and the data points. Release with
- * `profsubd_swept_free`.
- */
-typedef struct profsubd_swept profsubd_swept;
 
 /**
  * How densely `profsubd_check_folds` samples (NULL for the defaults 9, 4, 45).
@@ -612,11 +607,91 @@ extern "C" {
 #endif // __cplusplus
 
 /**
- * The message of the most recent call on this thread that returned a `profsubd_status`:
- * "" if that call returned `PROFSUBD_OK`. Never NULL. The string belongs to the library and
- * stays valid until the next profsubd call on the same thread; copy it to keep it.
+ * Set the sample intervals: along the profile (a profile model's rings, a revolution's or
+ * sweep's profile intervals), and around the axis (a profile model's meridians, a
+ * revolution's intervals around) or along the trajectory (a sweep); each 1 to 4096. The
+ * build checks the rest (a multiple of 4 around a profile model or a smooth pole, the
+ * product at most 4,000,000, ...). Defaults: 12 and 16 for a profile model, 16 and 32 for
+ * revolutions and sweeps.
  */
-const char *profsubd_last_error_message(void);
+enum profsubd_status profsubd_options_set_samples(struct profsubd_options *options,
+                                                  uint32_t along_profile,
+                                                  uint32_t around_or_along_path);
+
+/**
+ * Set the corner angle in degrees, in (0, 180]: a curve turning by more is creased there.
+ */
+enum profsubd_status profsubd_options_set_sharp_angle(struct profsubd_options *options,
+                                                      double degrees);
+
+/**
+ * Set the sharpness of crease edges at corners: a finite number >= 0 (10 or more is
+ * infinitely sharp, the default).
+ */
+enum profsubd_status profsubd_options_set_crease_sharpness(struct profsubd_options *options,
+                                                           float sharpness);
+
+/**
+ * Set how curve points are joined: `PROFSUBD_INTERPOLATION_SPLINE` or
+ * `PROFSUBD_INTERPOLATION_POLYLINE`.
+ */
+enum profsubd_status profsubd_options_set_interpolation(struct profsubd_options *options,
+                                                        int32_t interpolation);
+
+/**
+ * Set what closes ends that do not meet the axis (profile models, revolutions):
+ * `PROFSUBD_CAPS_OPEN` or `PROFSUBD_CAPS_FLAT`.
+ */
+enum profsubd_status profsubd_options_set_caps(struct profsubd_options *options, int32_t caps);
+
+/**
+ * Set the angle of a revolution in degrees, in (0, 360] (360: a closed full turn).
+ */
+enum profsubd_status profsubd_options_set_revolve_angle(struct profsubd_options *options,
+                                                        double degrees);
+
+/**
+ * Set whether the sweep's profile and trajectory are closed (0 open, 1 closed; default 0).
+ */
+enum profsubd_status profsubd_options_set_sweep_closed(struct profsubd_options *options,
+                                                       int32_t closed_profile,
+                                                       int32_t closed_trajectory);
+
+/**
+ * Set the sweep's frame: `PROFSUBD_FRAME_FIXED`, `PROFSUBD_FRAME_FRENET` or
+ * `PROFSUBD_FRAME_RMF`.
+ */
+enum profsubd_status profsubd_options_set_sweep_frame(struct profsubd_options *options,
+                                                      int32_t frame);
+
+/**
+ * Set the profile's scale at the start and at the end of the trajectory (finite, > 0;
+ * linear in between; default 1 and 1).
+ */
+enum profsubd_status profsubd_options_set_sweep_scale(struct profsubd_options *options,
+                                                      double start,
+                                                      double end);
+
+/**
+ * Set a second profile (`num_points` points `(a, b)`, 2 doubles each, copied) that the
+ * profile morphs into along the trajectory; it must have as many points as the profile.
+ * NULL with 0 points removes it.
+ */
+enum profsubd_status profsubd_options_set_sweep_profile_end(struct profsubd_options *options,
+                                                            const double *points,
+                                                            size_t num_points);
+
+/**
+ * Set the point indices forced to be corners: `num_profile` indices of profile points
+ * (revolutions and sweeps; for a revolution an end on the axis becomes a pointed pole) and
+ * `num_trajectory` indices of trajectory points (sweeps). Copied; NULL with 0 clears a list.
+ * Indices are checked when the surface is built.
+ */
+enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options *options,
+                                                        const uint32_t *profile_corners,
+                                                        size_t num_profile,
+                                                        const uint32_t *trajectory_corners,
+                                                        size_t num_trajectory);
 
 /**
  * Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
@@ -728,6 +803,60 @@ enum profsubd_status profsubd_evaluator_limit_vertices_masked(const struct profs
                                                               uint8_t *has_surface,
                                                               size_t capacity,
                                                               size_t *needed);
+
+/**
+ * Release a fitted construction. NULL is a no-op. Meshes taken from it stay valid.
+ */
+void profsubd_fitted_free(struct profsubd_fitted *fitted);
+
+/**
+ * A new mesh handle (caller-owned, released with `profsubd_mesh_free`) with the fitted
+ * control mesh: quads, crease and corner tags, option tags. The mesh is shared, not copied.
+ */
+enum profsubd_status profsubd_fitted_get_mesh(const struct profsubd_fitted *fitted,
+                                              struct profsubd_mesh **out);
+
+/**
+ * Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
+ * position equals point `i`. `capacity` and `*needed` count doubles; copy-out protocol as
+ * `profsubd_mesh_get_positions`.
+ */
+enum profsubd_status profsubd_fitted_get_targets(const struct profsubd_fitted *fitted,
+                                                 double *out,
+                                                 size_t capacity,
+                                                 size_t *needed);
+
+/**
+ * The fit's achieved residual (largest distance between a vertex's limit position and its
+ * data point) and the tolerance it met (1e-10 × the data points' bounding-box diagonal).
+ * Either output may be NULL.
+ */
+enum profsubd_status profsubd_fitted_get_fit_residual(const struct profsubd_fitted *fitted,
+                                                      double *residual,
+                                                      double *tolerance);
+
+/**
+ * The largest and mean distance from the limit surface to the design surface between the
+ * data points, over the limit surface's bounding-box diagonal: the limit and the design
+ * surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear
+ * between the face's data points' parameters), measured along the design surface's
+ * normal (see the README, "Valid surfaces"). Computed (with the fold check) on the first
+ * call of this or `profsubd_fitted_get_surface_quality`. Either output may be NULL.
+ */
+enum profsubd_status profsubd_fitted_get_design_distance(const struct profsubd_fitted *fitted,
+                                                         double *max,
+                                                         double *mean);
+
+/**
+ * The number of control faces whose limit surface folds (the fold check's criterion,
+ * `eval::folds`, with default settings), the worst normal reversal in degrees (above 90
+ * where it folds) and the undulation: the limit surface's bending energy over the design
+ * surface's (1 = as fair as the design). Any output may be NULL.
+ */
+enum profsubd_status profsubd_fitted_get_surface_quality(const struct profsubd_fitted *fitted,
+                                                         size_t *folded_faces,
+                                                         double *worst_reversal_deg,
+                                                         double *undulation);
 
 /**
  * Sample the limit surface of `evaluator` and report where it folds: a sample whose normal
@@ -1027,6 +1156,19 @@ enum profsubd_status profsubd_mesh_check(const struct profsubd_mesh *mesh,
                                          struct profsubd_mesh_report *out);
 
 /**
+ * The message of the most recent call on this thread that returned a `profsubd_status`:
+ * "" if that call returned `PROFSUBD_OK`. Never NULL. The string belongs to the library and
+ * stays valid until the next profsubd call on the same thread; copy it to keep it.
+ */
+const char *profsubd_last_error_message(void);
+
+/**
+ * A fixed description of a status number: "unknown status" for a number that is none.
+ * The string is static: never free it.
+ */
+const char *profsubd_status_string(int32_t status);
+
+/**
  * Create an options object with nothing set; `*out` receives it.
  */
 enum profsubd_status profsubd_options_new(struct profsubd_options **out);
@@ -1084,109 +1226,39 @@ enum profsubd_status profsubd_mesh_get_osd_hazard_faces(const struct profsubd_me
 /**
  * Build a profile model: blend the sweeps of the four curves, sample data points, build
  * the quad cage (pole caps, tips, creases) and fit it so that the exact limit surface
- * passes through every data point. `options` may be NULL (defaults). The model is fitted
- * under, and tagged with, the options' boundary interpolation and crease method
- * (`profsubd_options_set_boundary`, `profsubd_options_set_crease_method`; default
- * edge-and-corner and uniform; the triangle rule does not apply to the all-quad mesh).
- * Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (fewer than 2 points,
- * NaN, curves running top to bottom, a curve crossing the axis, unequal pole heights,
- * boundary interpolation none with an open end, whose data points no limit surface reaches,
- * ...; the message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
- * tolerance.
+ * passes through every data point. `options` may be NULL (defaults): samples
+ * (`profsubd_options_set_samples`: rings along, meridians around; a multiple of 4 around),
+ * sharp angle, crease sharpness, interpolation, caps, and the boundary interpolation and
+ * crease method the model is fitted under and tagged with (default edge-and-corner and
+ * uniform; the triangle rule does not apply to the all-quad mesh). Errors:
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (fewer than 2 points, NaN,
+ * curves running top to bottom, a curve crossing the axis, unequal pole heights, boundary
+ * interpolation none with an open end, whose data points no limit surface reaches, ...; the
+ * message says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
  */
 enum profsubd_status profsubd_profile_build(const struct profsubd_profile_curves *curves,
                                             const struct profsubd_options *options,
-                                            struct profsubd_profile **out);
+                                            struct profsubd_fitted **out);
 
 /**
- * Release a profile model. NULL is a no-op.
+ * The built-in model's curves (a bottle: `c1` and `c2`, `c3` and `c4` their mirrors, no
+ * forced corners) into `*curves`, whose `struct_size` the caller sets; the arrays are owned
+ * by the library and valid for the life of the program. `*along_profile` and
+ * `*around` (either may be NULL) receive the model's samples (rings, meridians), to pass to
+ * `profsubd_options_set_samples` for the model as built by
+ * `profsubd_profile_build_default`.
  */
-void profsubd_profile_free(struct profsubd_profile *profile);
+enum profsubd_status profsubd_profile_default_curves(struct profsubd_profile_curves *curves,
+                                                     uint32_t *along_profile,
+                                                     uint32_t *around);
 
 /**
- * A new mesh handle (caller-owned) with the model's fitted control mesh: quads, crease and
- * corner tags, option tags.
+ * Build the built-in model (a bottle; its curves: `profsubd_profile_default_curves`) in one
+ * call, as `profsubd_profile_build` does: `options` may be NULL; samples set in it replace
+ * the model's (20 rings, 16 meridians), and its other settings apply as they do there.
  */
-enum profsubd_status profsubd_profile_get_mesh(const struct profsubd_profile *profile,
-                                               struct profsubd_mesh **out);
-
-/**
- * Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
- * position equals point `i`. `capacity` and `*needed` count doubles; copy-out protocol as
- * `profsubd_mesh_get_positions`.
- */
-enum profsubd_status profsubd_profile_get_targets(const struct profsubd_profile *profile,
-                                                  double *out,
-                                                  size_t capacity,
-                                                  size_t *needed);
-
-/**
- * The fit's achieved residual (largest distance between a vertex's limit position and its
- * data point) and the tolerance it met (1e-10 × the data points' bounding-box diagonal).
- * Either output may be NULL.
- */
-enum profsubd_status profsubd_profile_get_fit_residual(const struct profsubd_profile *profile,
-                                                       double *residual,
-                                                       double *tolerance);
-
-/**
- * The largest and mean distance from the limit surface to the design surface between the
- * data points, over the limit surface's bounding-box diagonal: the limit and the design
- * surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear
- * between the face's data points' parameters), measured along the design surface's
- * normal (see the README, "Valid surfaces"). Computed (with the fold check) on the first
- * call of this or `profsubd_profile_get_surface_quality`. Either output may be NULL.
- */
-enum profsubd_status profsubd_profile_get_design_distance(const struct profsubd_profile *profile,
-                                                          double *max,
-                                                          double *mean);
-
-/**
- * The number of control faces whose limit surface folds (the fold check's criterion, `eval::folds`,
- * with default settings), the worst normal reversal in degrees (above 90 where it folds)
- * and the undulation: the limit surface's bending energy over the design surface's
- * (1 = as fair as the design). Any output may be NULL.
- */
-enum profsubd_status profsubd_profile_get_surface_quality(const struct profsubd_profile *profile,
-                                                          size_t *folded_faces,
-                                                          double *worst_reversal_deg,
-                                                          double *undulation);
-
-/**
- * Set the number of meridians (vertices per ring): a multiple of 4, 4 to 4096.
- */
-enum profsubd_status profsubd_options_set_around(struct profsubd_options *options, uint32_t around);
-
-/**
- * Set the number of ring intervals from bottom to top: 1 to 4096.
- */
-enum profsubd_status profsubd_options_set_along(struct profsubd_options *options, uint32_t along);
-
-/**
- * Set the corner angle in degrees, in (0, 180]: a curve turning by more is creased there.
- */
-enum profsubd_status profsubd_options_set_sharp_angle(struct profsubd_options *options,
-                                                      double degrees);
-
-/**
- * Set the sharpness of crease edges at corners (profiles, revolutions and sweeps): a finite
- * number >= 0 (10 or more is infinitely sharp, the default).
- */
-enum profsubd_status profsubd_options_set_crease_sharpness(struct profsubd_options *options,
-                                                           float sharpness);
-
-/**
- * Set how curve points are joined: `PROFSUBD_INTERPOLATION_SPLINE` or
- * `PROFSUBD_INTERPOLATION_POLYLINE`.
- */
-enum profsubd_status profsubd_options_set_interpolation(struct profsubd_options *options,
-                                                        int32_t interpolation);
-
-/**
- * Set what closes ends that do not meet the axis: `PROFSUBD_CAPS_OPEN` or
- * `PROFSUBD_CAPS_FLAT`.
- */
-enum profsubd_status profsubd_options_set_caps(struct profsubd_options *options, int32_t caps);
+enum profsubd_status profsubd_profile_build_default(const struct profsubd_options *options,
+                                                    struct profsubd_fitted **out);
 
 /**
  * Set the order of the vertices of refined meshes (`PROFSUBD_ORDER_VERTICES_FIRST`, the
@@ -1218,15 +1290,9 @@ enum profsubd_status profsubd_refine_uniform(const struct profsubd_mesh *mesh,
                                              struct profsubd_mesh **out);
 
 /**
- * A fixed description of a status number: "unknown status" for a number that is none.
- * The string is static: never free it.
- */
-const char *profsubd_status_string(int32_t status);
-
-/**
  * Build a surface of revolution: `profile` holds `num_points` points `(r, z)` (2 doubles
  * each), bottom to top, `r >= 0`; they are turned about the z axis. Settings (`options` may
- * be NULL): `profsubd_options_set_sweep_samples` (profile intervals, intervals around; default
+ * be NULL): `profsubd_options_set_samples` (profile intervals, intervals around; default
  * 16, 32), `profsubd_options_set_revolve_angle` (default 360),
  * `profsubd_options_set_sweep_corners` (its profile list), the profile construction's
  * interpolation, sharp angle, crease sharpness and caps (`profsubd_options_set_caps`:
@@ -1242,16 +1308,16 @@ const char *profsubd_status_string(int32_t status);
 enum profsubd_status profsubd_revolve(const double *profile,
                                       size_t num_points,
                                       const struct profsubd_options *options,
-                                      struct profsubd_swept **out);
+                                      struct profsubd_fitted **out);
 
 /**
  * Sweep a planar profile along a trajectory: `profile` holds `num_profile_points` points
  * `(a, b)` (2 doubles each; `a` along the frame's normal, `b` along its binormal),
  * `trajectory` holds `num_trajectory_points` points `(x, y, z)` (3 doubles each). Settings
- * (`options` may be NULL): `profsubd_options_set_sweep_samples` (profile intervals,
+ * (`options` may be NULL): `profsubd_options_set_samples` (profile intervals,
  * trajectory intervals; default 16, 32), `_set_sweep_closed`, `_set_sweep_frame`,
- * `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, the profile
- * construction's interpolation, sharp angle and crease sharpness, and the boundary
+ * `_set_sweep_scale`, `_set_sweep_profile_end`, `_set_sweep_corners`, the
+ * interpolation, sharp angle and crease sharpness, and the boundary
  * interpolation and crease method the surface is fitted under and tagged with. Errors:
  * `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (coincident points, a
  * crossing profile, a frame that cannot be built, boundary interpolation none with an open
@@ -1263,119 +1329,7 @@ enum profsubd_status profsubd_sweep(const double *profile,
                                     const double *trajectory,
                                     size_t num_trajectory_points,
                                     const struct profsubd_options *options,
-                                    struct profsubd_swept **out);
-
-/**
- * Release a revolution or sweep. NULL is a no-op.
- */
-void profsubd_swept_free(struct profsubd_swept *swept);
-
-/**
- * A new mesh handle (caller-owned) with the fitted control mesh: quads, crease and corner
- * tags, option tags.
- */
-enum profsubd_status profsubd_swept_get_mesh(const struct profsubd_swept *swept,
-                                             struct profsubd_mesh **out);
-
-/**
- * Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
- * position equals point `i`. `capacity` and `*needed` count doubles; copy-out protocol as
- * `profsubd_mesh_get_positions`.
- */
-enum profsubd_status profsubd_swept_get_targets(const struct profsubd_swept *swept,
-                                                double *out,
-                                                size_t capacity,
-                                                size_t *needed);
-
-/**
- * The fit's achieved residual (largest distance between a vertex's limit position and its
- * data point) and the tolerance it met (1e-10 × the data points' bounding-box diagonal).
- * Either output may be NULL.
- */
-enum profsubd_status profsubd_swept_get_fit_residual(const struct profsubd_swept *swept,
-                                                     double *residual,
-                                                     double *tolerance);
-
-/**
- * The largest and mean distance from the limit surface to the design surface between the
- * data points, over the limit surface's bounding-box diagonal: the limit and the design
- * surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear
- * between the face's data points' parameters), measured along the design surface's
- * normal (see the README, "Valid surfaces"). Computed (with the fold check) on the first
- * call of this or `profsubd_swept_get_surface_quality`. Either output may be NULL.
- */
-enum profsubd_status profsubd_swept_get_design_distance(const struct profsubd_swept *swept,
-                                                        double *max,
-                                                        double *mean);
-
-/**
- * The number of control faces whose limit surface folds (the fold check's criterion, `eval::folds`,
- * with default settings), the worst normal reversal in degrees (above 90 where it folds)
- * and the undulation: the limit surface's bending energy over the design surface's
- * (1 = as fair as the design). Any output may be NULL.
- */
-enum profsubd_status profsubd_swept_get_surface_quality(const struct profsubd_swept *swept,
-                                                        size_t *folded_faces,
-                                                        double *worst_reversal_deg,
-                                                        double *undulation);
-
-/**
- * Set the sample intervals: along the profile, and around the axis (revolution) or along
- * the trajectory (sweep); each 1 to 4096 (the build checks the rest: a multiple of 4 around a
- * smooth pole, ...).
- */
-enum profsubd_status profsubd_options_set_sweep_samples(struct profsubd_options *options,
-                                                        uint32_t samples_profile,
-                                                        uint32_t samples_path);
-
-/**
- * Set the angle of a revolution in degrees, in (0, 360] (360: a closed full turn).
- */
-enum profsubd_status profsubd_options_set_revolve_angle(struct profsubd_options *options,
-                                                        double degrees);
-
-/**
- * Set whether the sweep's profile and trajectory are closed (0 open, 1 closed; default 0).
- */
-enum profsubd_status profsubd_options_set_sweep_closed(struct profsubd_options *options,
-                                                       int32_t closed_profile,
-                                                       int32_t closed_trajectory);
-
-/**
- * Set the sweep's frame: `PROFSUBD_FRAME_FIXED`, `PROFSUBD_FRAME_FRENET` or
- * `PROFSUBD_FRAME_RMF`.
- */
-enum profsubd_status profsubd_options_set_sweep_frame(struct profsubd_options *options,
-                                                      int32_t frame);
-
-/**
- * Set the profile's scale at the start and at the end of the trajectory (finite, > 0;
- * linear in between; default 1 and 1).
- */
-enum profsubd_status profsubd_options_set_sweep_scale(struct profsubd_options *options,
-                                                      double start,
-                                                      double end);
-
-/**
- * Set a second profile (`num_points` points `(a, b)`, 2 doubles each, copied) that the
- * profile morphs into along the trajectory; it must have as many points as the profile.
- * NULL with 0 points removes it.
- */
-enum profsubd_status profsubd_options_set_sweep_profile_end(struct profsubd_options *options,
-                                                            const double *points,
-                                                            size_t num_points);
-
-/**
- * Set the point indices forced to be corners: `num_profile` indices of profile points
- * (revolutions and sweeps; for a revolution an end on the axis becomes a pointed pole) and
- * `num_trajectory` indices of trajectory points (sweeps). Copied; NULL with 0 clears a list.
- * Indices are checked when the surface is built.
- */
-enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options *options,
-                                                        const uint32_t *profile_corners,
-                                                        size_t num_profile,
-                                                        const uint32_t *trajectory_corners,
-                                                        size_t num_trajectory);
+                                    struct profsubd_fitted **out);
 
 /**
  * The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare

@@ -16,25 +16,25 @@ use glam::DVec3;
 use mesh_compare::run_cli;
 
 use profsubd::construct::profile::shapes::double_cone;
-use profsubd::construct::profile::{build, Caps, ProfileInput};
-use profsubd::construct::sweep::revolve::RevolveInput;
-use profsubd::construct::sweep::sweep::SweepInput;
-use profsubd::construct::sweep::{revolve, sweep};
 use profsubd::eval::Evaluator;
+use profsubd::ffi::construct::profsubd_options_set_crease_sharpness;
+use profsubd::ffi::fitted::{profsubd_fitted, profsubd_fitted_free, profsubd_fitted_get_mesh};
 use profsubd::ffi::mesh::profsubd_mesh_free;
 use profsubd::ffi::mesh_io::profsubd_mesh_write_obj;
 use profsubd::ffi::options::{
     profsubd_options, profsubd_options_free, profsubd_options_new, profsubd_options_set_boundary,
     profsubd_options_set_crease_method,
 };
-use profsubd::ffi::profile::{
-    profsubd_options_set_crease_sharpness, profsubd_profile, profsubd_profile_build,
-    profsubd_profile_curves, profsubd_profile_free, profsubd_profile_get_mesh,
-};
+use profsubd::ffi::profile::{profsubd_profile_build, profsubd_profile_curves};
+use profsubd::ffi::revolve::profsubd_revolve;
 use profsubd::ffi::status::profsubd_status::{self, *};
-use profsubd::ffi::sweep::{profsubd_revolve, profsubd_swept, profsubd_swept_free};
 use profsubd::io::obj::{parse_obj, read_obj_file, to_obj_string};
 use profsubd::mesh::SHARPNESS_INFINITE;
+use profsubd::profile::{build, ProfileInput};
+use profsubd::Caps;
+use profsubd::RevolveInput;
+use profsubd::SweepInput;
+use profsubd::{revolve, sweep, Settings};
 use profsubd::{BoundaryInterpolation, CreaseMethod, Error, Mesh, SubdivOptions};
 
 const BOUNDARIES: [BoundaryInterpolation; 2] = [
@@ -106,7 +106,7 @@ fn options(boundary: BoundaryInterpolation, crease_method: CreaseMethod) -> Subd
     }
 }
 
-fn vase() -> ProfileInput {
+fn vase() -> (ProfileInput, Settings) {
     ProfileInput::from_json(
         &std::fs::read_to_string(mesh_compare::example_file("profiles", "vase", "json")).unwrap(),
         Path::new("vase.json"),
@@ -118,15 +118,18 @@ fn vase() -> ProfileInput {
 /// cylinder-like body): every boundary rule that has a surface and both crease methods.
 #[test]
 fn profiles_interpolate_under_every_option() {
-    let mut cone = double_cone(1.0, 1.0, 8);
-    cone.crease_sharpness = 2.5;
-    let mut capped = ProfileInput::new(
-        vec![[0.8, 0.0], [1.0, 0.5], [0.9, 1.0], [0.5, 1.5], [0.6, 2.0]],
-        vec![[0.6, 0.0], [0.7, 0.5], [0.7, 1.0], [0.4, 1.5], [0.5, 2.0]],
+    let mut cone = (double_cone(1.0, 1.0, 8), Settings::default());
+    cone.1.crease_sharpness = 2.5;
+    let mut capped = (
+        ProfileInput::new(
+            vec![[0.8, 0.0], [1.0, 0.5], [0.9, 1.0], [0.5, 1.5], [0.6, 2.0]],
+            vec![[0.6, 0.0], [0.7, 0.5], [0.7, 1.0], [0.4, 1.5], [0.5, 2.0]],
+        ),
+        Settings::default(),
     );
-    capped.caps = Caps::Flat;
-    capped.crease_sharpness = 1.5;
-    capped.corners.c1 = vec![2];
+    capped.1.caps = Caps::Flat;
+    capped.1.crease_sharpness = 1.5;
+    capped.0.corners.c1 = vec![2];
     for (name, base) in [
         ("vase", vase()),
         ("cone 2.5", cone),
@@ -134,10 +137,10 @@ fn profiles_interpolate_under_every_option() {
     ] {
         for boundary in BOUNDARIES {
             for crease_method in METHODS {
-                let mut input = base.clone();
-                input.boundary = boundary;
-                input.crease_method = crease_method;
-                let m = build(&input).unwrap();
+                let (input, mut settings) = base.clone();
+                settings.boundary = boundary;
+                settings.crease_method = crease_method;
+                let m = build(&input, &settings).unwrap();
                 let what = format!("{name} {boundary:?} {crease_method:?}");
                 assert_interpolates(&m.mesh, &m.targets, options(boundary, crease_method), &what);
             }
@@ -149,29 +152,37 @@ fn profiles_interpolate_under_every_option() {
 /// rules; with an open end it is refused, naming a vertex of the open ring.
 #[test]
 fn boundary_none_fits_closed_models_and_refuses_open_ends() {
-    let mut cone = double_cone(1.0, 1.0, 8);
-    cone.crease_sharpness = 2.5;
-    let reference = build(&cone).unwrap();
-    cone.boundary = BoundaryInterpolation::None;
-    let m = build(&cone).unwrap();
+    let cone = double_cone(1.0, 1.0, 8);
+    let mut settings = Settings {
+        crease_sharpness: 2.5,
+        ..Settings::default()
+    };
+    let reference = build(&cone, &settings).unwrap();
+    settings.boundary = BoundaryInterpolation::None;
+    let m = build(&cone, &settings).unwrap();
     let none = options(BoundaryInterpolation::None, CreaseMethod::Uniform);
     assert_interpolates(&m.mesh, &m.targets, none, "cone none");
     assert_eq!(m.mesh.positions(), reference.mesh.positions());
 
     let mut open = vase();
-    open.boundary = BoundaryInterpolation::None;
-    let e = build(&open).unwrap_err();
+    open.1.boundary = BoundaryInterpolation::None;
+    let e = build(&open.0, &open.1).unwrap_err();
     assert!(
         matches!(&e, Error::InvalidArgument(m) if m.contains("16 vertices")
             && m.contains("boundary interpolation none")
             && m.contains("(1, 0, 4.1)")),
         "{e}"
     );
-    let mut rev = RevolveInput::new(vec![[1.0, 0.0], [1.2, 1.0]]);
-    rev.boundary = BoundaryInterpolation::None;
-    assert!(matches!(revolve(&rev), Err(Error::InvalidArgument(m)) if m.contains("boundary")));
+    let rev = RevolveInput::new(vec![[1.0, 0.0], [1.2, 1.0]]);
+    let none = Settings {
+        boundary: BoundaryInterpolation::None,
+        ..Settings::default()
+    };
+    assert!(
+        matches!(revolve::build(&rev, &none), Err(Error::InvalidArgument(m)) if m.contains("boundary"))
+    );
     // A full turn with two poles is closed.
-    let mut sphere = RevolveInput::new(
+    let sphere = RevolveInput::new(
         (0..=12)
             .map(|i| {
                 let t = std::f64::consts::PI * (i as f64 / 12.0 - 0.5);
@@ -179,8 +190,7 @@ fn boundary_none_fits_closed_models_and_refuses_open_ends() {
             })
             .collect(),
     );
-    sphere.boundary = BoundaryInterpolation::None;
-    let s = revolve(&sphere).unwrap();
+    let s = revolve::build(&sphere, &none).unwrap();
     assert_interpolates(
         &s.mesh,
         &s.targets,
@@ -199,7 +209,10 @@ fn partial_revolutions_and_open_sweeps_honour_the_boundary_rule() {
     rev.samples_around = 12;
     rev.samples_profile = 8;
     rev.corners = vec![2];
-    rev.crease_sharpness = 2.0;
+    let mut rev_settings = Settings {
+        crease_sharpness: 2.0,
+        ..Settings::default()
+    };
     let mut ribbon = SweepInput::new(
         vec![[-0.3, 0.0], [0.0, 0.1], [0.3, 0.0]],
         vec![
@@ -213,20 +226,23 @@ fn partial_revolutions_and_open_sweeps_honour_the_boundary_rule() {
     ribbon.samples_trajectory = 12;
     ribbon.corners.profile = vec![1];
     ribbon.corners.trajectory = vec![1];
-    ribbon.crease_sharpness = 1.5;
+    let mut ribbon_settings = Settings {
+        crease_sharpness: 1.5,
+        ..Settings::default()
+    };
     for crease_method in METHODS {
         let mut fitted = Vec::new();
         for boundary in BOUNDARIES {
-            rev.boundary = boundary;
-            rev.crease_method = crease_method;
-            ribbon.boundary = boundary;
-            ribbon.crease_method = crease_method;
+            rev_settings.boundary = boundary;
+            rev_settings.crease_method = crease_method;
+            ribbon_settings.boundary = boundary;
+            ribbon_settings.crease_method = crease_method;
             let o = options(boundary, crease_method);
-            let r = revolve(&rev).unwrap();
+            let r = revolve::build(&rev, &rev_settings).unwrap();
             assert!(r.mesh.creases().iter().all(|c| c.sharpness == 2.0));
             assert!(!r.mesh.creases().is_empty());
             assert_interpolates(&r.mesh, &r.targets, o, &format!("270° revolve {o:?}"));
-            let s = sweep(&ribbon).unwrap();
+            let s = sweep::build(&ribbon, &ribbon_settings).unwrap();
             assert!(s.mesh.creases().iter().all(|c| c.sharpness == 1.5));
             assert_interpolates(&s.mesh, &s.targets, o, &format!("ribbon sweep {o:?}"));
             fitted.push((r, s));
@@ -279,20 +295,26 @@ fn semi_sharp_sweeps_and_revolutions_interpolate() {
     goblet.corners = vec![1];
     for sharpness in [0.5f32, 1.5, 3.0] {
         for crease_method in METHODS {
-            for (name, input) in [("tube", &mut tube), ("rail", &mut rail)] {
-                input.crease_sharpness = sharpness;
-                input.crease_method = crease_method;
-                let s = sweep(input).unwrap();
-                input.crease_method = CreaseMethod::Uniform;
-                assert_eq!(s.mesh.positions(), sweep(input).unwrap().mesh.positions());
+            let mut settings = Settings {
+                crease_sharpness: sharpness,
+                ..Settings::default()
+            };
+            for (name, input) in [("tube", &tube), ("rail", &rail)] {
+                settings.crease_method = crease_method;
+                let s = sweep::build(input, &settings).unwrap();
+                let uniform = Settings {
+                    crease_method: CreaseMethod::Uniform,
+                    ..settings
+                };
+                let u = sweep::build(input, &uniform).unwrap();
+                assert_eq!(s.mesh.positions(), u.mesh.positions());
                 assert!(!s.mesh.creases().is_empty());
                 assert!(s.mesh.creases().iter().all(|c| c.sharpness == sharpness));
                 let o = options(BoundaryInterpolation::EdgeAndCorner, crease_method);
                 assert_interpolates(&s.mesh, &s.targets, o, &format!("{name} {sharpness} {o:?}"));
             }
-            goblet.crease_sharpness = sharpness;
-            goblet.crease_method = crease_method;
-            let g = revolve(&goblet).unwrap();
+            settings.crease_method = crease_method;
+            let g = revolve::build(&goblet, &settings).unwrap();
             assert!(g.mesh.creases().iter().all(|c| c.sharpness == sharpness));
             // The bottom is a pointed pole: its tip stays infinitely sharp.
             assert!(g
@@ -309,14 +331,14 @@ fn semi_sharp_sweeps_and_revolutions_interpolate() {
 #[test]
 fn json_keys_parse_and_bad_values_are_specific_errors() {
     let c = r#""c1": [[0,0],[1,1],[0,2]], "c2": [[0,0],[1,1],[0,2]]"#;
-    let p = ProfileInput::from_json(
+    let (_, p) = ProfileInput::from_json(
         &format!(r#"{{{c}, "boundary": "edge-only", "crease_method": "chaikin"}}"#),
         Path::new("p.json"),
     )
     .unwrap();
     assert_eq!(p.boundary, BoundaryInterpolation::EdgeOnly);
     assert_eq!(p.crease_method, CreaseMethod::Chaikin);
-    let p = ProfileInput::from_json(&format!("{{{c}}}"), Path::new("p.json")).unwrap();
+    let (_, p) = ProfileInput::from_json(&format!("{{{c}}}"), Path::new("p.json")).unwrap();
     assert_eq!(p.boundary, BoundaryInterpolation::EdgeAndCorner);
     assert_eq!(p.crease_method, CreaseMethod::Uniform);
     let parse_error = |e: Error| match e {
@@ -340,7 +362,7 @@ fn json_keys_parse_and_bad_values_are_specific_errors() {
     );
     assert!(parse_error(e.unwrap_err()).contains("unknown field `creasemethod`"));
 
-    let r = RevolveInput::from_json(
+    let (_, r) = RevolveInput::from_json(
         r#"{"profile": [[1,0],[1,1]], "crease_sharpness": 2.5, "boundary": "edge-only",
             "crease_method": "chaikin"}"#,
         Path::new("r.json"),
@@ -350,9 +372,9 @@ fn json_keys_parse_and_bad_values_are_specific_errors() {
         (r.crease_sharpness, r.boundary, r.crease_method),
         (2.5, BoundaryInterpolation::EdgeOnly, CreaseMethod::Chaikin)
     );
-    let r = RevolveInput::from_json(r#"{"profile": [[1,0],[1,1]]}"#, Path::new("r")).unwrap();
+    let (_, r) = RevolveInput::from_json(r#"{"profile": [[1,0],[1,1]]}"#, Path::new("r")).unwrap();
     assert_eq!(r.crease_sharpness, SHARPNESS_INFINITE);
-    let s = SweepInput::from_json(
+    let (_, s) = SweepInput::from_json(
         r#"{"profile": [[0,0],[1,0]], "trajectory": [[0,0,0],[0,0,1]],
             "crease_sharpness": "infinite", "boundary": "none"}"#,
         Path::new("s.json"),
@@ -365,18 +387,24 @@ fn json_keys_parse_and_bad_values_are_specific_errors() {
         Path::new("s"),
     );
     assert!(parse_error(e.unwrap_err()).contains("\"infinite\" or a number"));
-    let mut bad = RevolveInput::new(vec![[1.0, 0.0], [1.0, 1.0]]);
-    bad.crease_sharpness = -1.0;
+    let bad = RevolveInput::new(vec![[1.0, 0.0], [1.0, 1.0]]);
+    let negative = Settings {
+        crease_sharpness: -1.0,
+        ..Settings::default()
+    };
     assert!(
-        matches!(revolve(&bad), Err(Error::InvalidArgument(m)) if m.contains("crease_sharpness = -1"))
+        matches!(revolve::build(&bad, &negative), Err(Error::InvalidArgument(m)) if m.contains("crease_sharpness = -1"))
     );
-    let mut bad = SweepInput::new(
+    let bad = SweepInput::new(
         vec![[0.0, 0.0], [1.0, 0.0]],
         vec![[0.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
     );
-    bad.crease_sharpness = f32::NAN;
+    let nan = Settings {
+        crease_sharpness: f32::NAN,
+        ..Settings::default()
+    };
     assert!(
-        matches!(sweep(&bad), Err(Error::InvalidArgument(m)) if m.contains("crease_sharpness"))
+        matches!(sweep::build(&bad, &nan), Err(Error::InvalidArgument(m)) if m.contains("crease_sharpness"))
     );
 }
 
@@ -485,7 +513,7 @@ impl Drop for Options {
     }
 }
 
-fn build_profile(curve: &[f64], options: &Options) -> (profsubd_status, *mut profsubd_profile) {
+fn build_profile(curve: &[f64], options: &Options) -> (profsubd_status, *mut profsubd_fitted) {
     let mut curves: profsubd_profile_curves = unsafe { std::mem::zeroed() };
     curves.struct_size = std::mem::size_of::<profsubd_profile_curves>();
     curves.c1 = curve.as_ptr();
@@ -501,7 +529,7 @@ fn build_profile(curve: &[f64], options: &Options) -> (profsubd_status, *mut pro
 /// and revolve constructions; boundary none on an open model fails with no output.
 #[test]
 fn c_api_passes_the_options_to_the_fit() {
-    let vase: Vec<f64> = vase().c1.iter().flatten().copied().collect();
+    let vase: Vec<f64> = vase().0.c1.iter().flatten().copied().collect();
     let o = Options::new();
     unsafe {
         assert_eq!(profsubd_options_set_boundary(o.0, 1), PROFSUBD_OK);
@@ -520,8 +548,8 @@ fn c_api_passes_the_options_to_the_fit() {
     assert_eq!(st, PROFSUBD_OK);
     let mut mesh = null_mut();
     unsafe {
-        assert_eq!(profsubd_profile_get_mesh(p, &mut mesh), PROFSUBD_OK);
-        profsubd_profile_free(p);
+        assert_eq!(profsubd_fitted_get_mesh(p, &mut mesh), PROFSUBD_OK);
+        profsubd_fitted_free(p);
         let path =
             std::env::temp_dir().join(format!("profsubd_fit_options_{}.obj", std::process::id()));
         let c_path = std::ffi::CString::new(path.to_str().unwrap()).unwrap();
@@ -538,7 +566,7 @@ fn c_api_passes_the_options_to_the_fit() {
     assert_eq!(st, PROFSUBD_ERROR_INVALID_ARGUMENT);
     assert!(p.is_null());
     let profile = [1.0, 0.0, 1.2, 1.0];
-    let mut s: *mut profsubd_swept = null_mut();
+    let mut s: *mut profsubd_fitted = null_mut();
     let st = unsafe { profsubd_revolve(profile.as_ptr(), 2, o.0, &mut s) };
     assert_eq!(st, PROFSUBD_ERROR_INVALID_ARGUMENT);
     assert!(s.is_null());
@@ -548,6 +576,6 @@ fn c_api_passes_the_options_to_the_fit() {
             profsubd_revolve(profile.as_ptr(), 2, o.0, &mut s),
             PROFSUBD_OK
         );
-        profsubd_swept_free(s);
+        profsubd_fitted_free(s);
     }
 }

@@ -15,13 +15,13 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use arc::arc;
-use profsubd::construct::sweep::revolve::RevolveInput;
-use profsubd::construct::sweep::sweep::SweepInput;
-use profsubd::construct::sweep::{revolve, sweep};
 use profsubd::eval::folds::{find_folds, FoldReport, FoldSettings};
 use profsubd::eval::Evaluator;
 use profsubd::io::obj::read_obj_file;
 use profsubd::Mesh;
+use profsubd::RevolveInput;
+use profsubd::SweepInput;
+use profsubd::{revolve, sweep, Settings};
 
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -191,7 +191,7 @@ fn analytic_torus_cylinder_and_cone_do_not_fold() {
     let mut input = SweepInput::new(profile, trajectory);
     input.closed_profile = true;
     input.closed_trajectory = true;
-    let torus = sweep(&input).unwrap();
+    let torus = sweep::build(&input, &Settings::default()).unwrap();
     let r = folds(&torus.mesh);
     assert!(r.is_fold_free(), "torus: {:?}", r.folded_faces);
     // A fine torus: no face's normal turns far from its mean.
@@ -205,7 +205,7 @@ fn analytic_torus_cylinder_and_cone_do_not_fold() {
             p
         }),
     ] {
-        let s = revolve(&RevolveInput::new(profile)).unwrap();
+        let s = revolve::build(&RevolveInput::new(profile), &Settings::default()).unwrap();
         let r = folds(&s.mesh);
         assert!(r.is_fold_free(), "{name}: {:?}", r.folded_faces);
     }

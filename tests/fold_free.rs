@@ -9,12 +9,12 @@ mod random_profile;
 use std::f64::consts::PI;
 use std::path::PathBuf;
 
-use profsubd::cli::profile::read_input;
 use profsubd::construct::design::SurfaceReport;
-use profsubd::construct::profile::{build, shapes::ellipsoid, ProfileInput};
-use profsubd::construct::sweep::revolve::RevolveInput;
-use profsubd::construct::sweep::sweep::SweepInput;
-use profsubd::construct::sweep::{revolve, sweep};
+use profsubd::construct::settings::read_json;
+use profsubd::profile::{build, shapes::ellipsoid, ProfileInput};
+use profsubd::RevolveInput;
+use profsubd::SweepInput;
+use profsubd::{revolve, sweep, Settings};
 use random_profile::RandomProfiles;
 
 /// Samplings from 16 × 8 to 128 × 64 (around × along).
@@ -43,21 +43,28 @@ fn assert_valid(name: &str, r: &SurfaceReport, max_distance: f64) {
 #[test]
 fn examples_do_not_fold_and_follow_their_design() {
     for name in ["bottle", "vase", "mouse", "spinning_top"] {
-        let model = build(&read_input(Some(&example("profiles", name))).unwrap()).unwrap();
+        let (input, settings) = read_json::<ProfileInput>(&example("profiles", name)).unwrap();
+        let model = build(&input, &settings).unwrap();
         let r = model.surface_report().unwrap();
         assert_valid(name, r, 3e-3);
         assert!((0.9..1.1).contains(&r.undulation), "{name}: {r:?}");
     }
     let path = example("sweeps", "wine_glass");
     let text = std::fs::read_to_string(&path).unwrap();
-    let glass = revolve(&RevolveInput::from_json(&text, &path).unwrap()).unwrap();
+    let glass = {
+        let (input, settings) = RevolveInput::from_json(&text, &path).unwrap();
+        revolve::build(&input, &settings).unwrap()
+    };
     let r = glass.surface_report().unwrap();
     assert_valid("wine_glass", r, 1e-3);
     assert!((0.9..1.1).contains(&r.undulation), "{r:?}");
     for name in ["handrail", "torus_knot_tube"] {
         let path = example("sweeps", name);
         let text = std::fs::read_to_string(&path).unwrap();
-        let s = sweep(&SweepInput::from_json(&text, &path).unwrap()).unwrap();
+        let s = {
+            let (input, settings) = SweepInput::from_json(&text, &path).unwrap();
+            sweep::build(&input, &settings).unwrap()
+        };
         assert_valid(name, s.surface_report().unwrap(), 5e-3);
     }
 }
@@ -75,7 +82,7 @@ fn ellipsoids_of_several_aspect_ratios_do_not_fold() {
             let mut input = ellipsoid(a, b, c, 400);
             input.around = around as u32;
             input.along = along as u32;
-            let model = build(&input).unwrap();
+            let model = build(&input, &Settings::default()).unwrap();
             let r = model.surface_report().unwrap();
             assert_valid(
                 &format!("ellipsoid ({a}, {b}, {c}) {around}x{along}"),
@@ -118,7 +125,7 @@ fn spheres_and_goblets_by_revolution_do_not_fold() {
             let mut input = RevolveInput::new(profile.clone());
             input.samples_around = around;
             input.samples_profile = along * if name == "goblet" { 2 } else { 1 };
-            let s = revolve(&input).unwrap();
+            let s = revolve::build(&input, &Settings::default()).unwrap();
             let r = s.surface_report().unwrap();
             assert_valid(&format!("{name} {around}x{along}"), r, 5e-3);
         }
@@ -127,12 +134,12 @@ fn spheres_and_goblets_by_revolution_do_not_fold() {
 
 #[test]
 fn bottles_with_flat_bases_do_not_fold() {
-    let input = read_input(Some(&example("profiles", "bottle"))).unwrap();
+    let (input, settings) = read_json::<ProfileInput>(&example("profiles", "bottle")).unwrap();
     for (around, along) in SAMPLINGS {
         let mut bottle: ProfileInput = input.clone();
         bottle.around = around as u32;
         bottle.along = along as u32 + 8;
-        let model = build(&bottle).unwrap();
+        let model = build(&bottle, &settings).unwrap();
         assert_valid(
             &format!("bottle {around}x{}", along + 8),
             model.surface_report().unwrap(),
@@ -150,12 +157,15 @@ fn random_full_turn_revolutions_do_not_fold() {
     for _ in 0..60 {
         let pts = random.profile();
         let mut input = RevolveInput::new(pts);
+        let mut settings = Settings::default();
         if random.next() < 0.5 {
-            input.caps = profsubd::construct::profile::Caps::Flat;
+            settings.caps = profsubd::Caps::Flat;
         }
         input.samples_around = 4 * (2 + (random.next() * 6.0) as usize);
         input.samples_profile = 4 + (random.next() * 28.0) as usize;
-        let Ok(s) = revolve(&input) else { continue };
+        let Ok(s) = revolve::build(&input, &settings) else {
+            continue;
+        };
         let r = s.surface_report().unwrap();
         assert_eq!(r.folded_faces, 0, "{input:?}: {r:?}");
         built += 1;
@@ -169,8 +179,12 @@ fn partial_vase_revolutions_with_flat_caps_do_not_fold() {
     // profile turns towards the axis, whose meridian-cap corner spans a reflex angle.
     let path = example("sweeps", "vase_cutaway");
     let text = std::fs::read_to_string(&path).unwrap();
-    let input = RevolveInput::from_json(&text, &path).unwrap();
-    let r = revolve(&input).unwrap().surface_report().unwrap().clone();
+    let (input, settings) = RevolveInput::from_json(&text, &path).unwrap();
+    let r = revolve::build(&input, &settings)
+        .unwrap()
+        .surface_report()
+        .unwrap()
+        .clone();
     println!(
         "vase_cutaway: folded {}, design distance max {:.2e} mean {:.2e}",
         r.folded_faces, r.max_design_distance, r.mean_design_distance
@@ -180,7 +194,11 @@ fn partial_vase_revolutions_with_flat_caps_do_not_fold() {
         for (around, along) in [(16, 16), (32, 32)] {
             let mut vase = input.clone();
             (vase.angle_deg, vase.samples_around, vase.samples_profile) = (angle, around, along);
-            let r = revolve(&vase).unwrap().surface_report().unwrap().clone();
+            let r = revolve::build(&vase, &settings)
+                .unwrap()
+                .surface_report()
+                .unwrap()
+                .clone();
             println!("vase {angle}° {around}x{along}: folded {}", r.folded_faces);
             assert_eq!(r.folded_faces, 0, "{angle} {around}x{along}: {r:?}");
             assert!(r.worst_reversal_deg < 90.0, "{r:?}");
@@ -197,7 +215,10 @@ fn wine_glass_cutaway_folds_less() {
     // and their reflex corners split.
     let path = example("sweeps", "wine_glass_cutaway");
     let text = std::fs::read_to_string(&path).unwrap();
-    let s = revolve(&RevolveInput::from_json(&text, &path).unwrap()).unwrap();
+    let s = {
+        let (input, settings) = RevolveInput::from_json(&text, &path).unwrap();
+        revolve::build(&input, &settings).unwrap()
+    };
     let r = s.surface_report().unwrap();
     println!(
         "wine_glass_cutaway: folded {}, design distance max {:.2e} mean {:.2e}",

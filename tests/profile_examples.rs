@@ -10,9 +10,9 @@ use std::path::PathBuf;
 
 use mesh_compare::{assert_same, assert_targets, example_file, run_cli as profsubd};
 
-use profsubd::cli::profile::read_input;
-use profsubd::construct::profile::{build, EndKind};
+use profsubd::construct::settings::read_json;
 use profsubd::io::obj::read_obj_file;
+use profsubd::profile::{build, build_cage, default_model, EndKind, ProfileInput};
 use profsubd::Mesh;
 
 const EXAMPLES: [&str; 4] = ["bottle", "vase", "mouse", "spinning_top"];
@@ -42,8 +42,9 @@ fn topology(m: &Mesh) -> (HashMap<(u32, u32), usize>, Vec<usize>) {
 #[test]
 fn examples_regenerate_to_their_checked_in_obj_files() {
     for name in EXAMPLES {
-        let input = read_input(Some(&example(name, "json"))).unwrap();
-        let model = build(&input).unwrap();
+        let (input, settings) = read_json::<ProfileInput>(&example(name, "json")).unwrap();
+        let model = build(&input, &settings).unwrap();
+        let ends = build_cage(&input, &settings).unwrap().ends;
         let stored = read_obj_file(&example(name, "obj")).unwrap().mesh;
         assert_same(&model.mesh, &stored, name);
         let tol = 1e-12 * model.mesh.bounding_box_diagonal();
@@ -60,7 +61,7 @@ fn examples_regenerate_to_their_checked_in_obj_files() {
                 assert!((3..=5).contains(&n), "{name}: vertex {v} has valence {n}");
             }
         }
-        let closed = !model.ends.contains(&EndKind::Open);
+        let closed = !ends.contains(&EndKind::Open);
         let boundary = edges.values().filter(|&&c| c == 1).count();
         assert!(edges.values().all(|&c| c <= 2), "{name}: non-manifold edge");
         if closed {
@@ -89,7 +90,8 @@ fn cli_builds_the_default_bottle_with_targets() {
     let written = read_obj_file(&out).unwrap().mesh;
     let stored = read_obj_file(&example("bottle", "obj")).unwrap().mesh;
     assert_same(&written, &stored, "default model");
-    let model = build(&read_input(None).unwrap()).unwrap();
+    let (input, settings) = default_model();
+    let model = build(&input, &settings).unwrap();
     let lines: Vec<String> = std::fs::read_to_string(&targets)
         .unwrap()
         .lines()

@@ -2,13 +2,19 @@
 //! residual checked with an independently built stencil table.
 
 use glam::DVec3;
-use profsubd::construct::profile::shapes::{double_cone, ellipsoid};
-use profsubd::construct::profile::{build, EndKind, ProfileModel};
 use profsubd::eval::{limit_stencils, Evaluator};
+use profsubd::profile::shapes::{double_cone, ellipsoid};
+use profsubd::profile::{build, build_cage, default_model, EndKind};
 use profsubd::SubdivOptions;
+use profsubd::{Fitted, ProfileInput, Settings};
 
 /// Largest of `dist(p)` over `k × k` interior samples and the corners of every face.
-fn max_over_limit(model: &ProfileModel, k: usize, dist: impl Fn(DVec3) -> f64) -> f64 {
+/// The end kinds of the model of `input` (its cage's).
+fn ends(input: &ProfileInput) -> [EndKind; 2] {
+    build_cage(input, &Settings::default()).unwrap().ends
+}
+
+fn max_over_limit(model: &Fitted, k: usize, dist: impl Fn(DVec3) -> f64) -> f64 {
     let ev = Evaluator::new(&model.mesh, &SubdivOptions::default()).unwrap();
     let mut worst: f64 = 0.0;
     for f in 0..model.mesh.num_faces() as u32 {
@@ -25,7 +31,7 @@ fn max_over_limit(model: &ProfileModel, k: usize, dist: impl Fn(DVec3) -> f64) -
 
 /// Largest distance between each vertex's limit position (a fresh stencil table) and its
 /// target, relative to the targets' bounding-box diagonal.
-fn relative_residual(model: &ProfileModel) -> f64 {
+fn relative_residual(model: &Fitted) -> f64 {
     let table = limit_stencils(&model.mesh, &SubdivOptions::default()).unwrap();
     let pos = model.mesh.positions();
     let (mut lo, mut hi) = (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY));
@@ -60,8 +66,8 @@ fn ellipsoid_errors(a: f64, b: f64, c: f64, samplings: &[(u32, u32)]) -> Vec<f64
             let mut input = ellipsoid(a, b, c, 400);
             input.around = around;
             input.along = along;
-            let model = build(&input).unwrap();
-            assert_eq!(model.ends, [EndKind::Smooth, EndKind::Smooth]);
+            let model = build(&input, &Settings::default()).unwrap();
+            assert_eq!(ends(&input), [EndKind::Smooth, EndKind::Smooth]);
             assert!(relative_residual(&model) <= 1e-10);
             let e = max_over_limit(&model, 4, dist) / size;
             println!(
@@ -111,8 +117,8 @@ fn double_cone_limit_surface_stays_near_the_cone() {
     let mut input = double_cone(1.0, 1.0, 8);
     input.around = 32;
     input.along = 16;
-    let model = build(&input).unwrap();
-    assert_eq!(model.ends, [EndKind::Tip, EndKind::Tip]);
+    let model = build(&input, &Settings::default()).unwrap();
+    assert_eq!(ends(&input), [EndKind::Tip, EndKind::Tip]);
     assert_eq!(model.mesh.creases().len(), 32);
     assert!(relative_residual(&model) <= 1e-10);
     // Distance to the cone r = 1 - |z| (perpendicular: the slant is 45°).
@@ -133,10 +139,13 @@ fn semi_sharp_model_interpolates_at_every_face_corner() {
     // Fitted on limitv's stencils; checked here with the (face, u, v) evaluator at every
     // corner of every face, a separate code path.
     let mut input = double_cone(1.0, 1.0, 6);
-    input.crease_sharpness = 2.5;
+    let settings = Settings {
+        crease_sharpness: 2.5,
+        ..Settings::default()
+    };
     input.around = 12;
     input.along = 8;
-    let model = build(&input).unwrap();
+    let model = build(&input, &settings).unwrap();
     assert!(model.mesh.creases().iter().all(|c| c.sharpness == 2.5));
     let ev = Evaluator::new(&model.mesh, &SubdivOptions::default()).unwrap();
     let tol = 1e-10 * model.mesh.bounding_box_diagonal();
@@ -152,7 +161,8 @@ fn semi_sharp_model_interpolates_at_every_face_corner() {
 
 #[test]
 fn bottle_limit_surface_keeps_its_crease_rings() {
-    let model = build(&profsubd::cli::profile::read_input(None).unwrap()).unwrap();
+    let (input, settings) = default_model();
+    let model = build(&input, &settings).unwrap();
     let m = &model.mesh;
     let ev = Evaluator::new(m, &SubdivOptions::default()).unwrap();
     // Across every crease edge the limit surface is continuous but its normal jumps. Per
@@ -240,14 +250,14 @@ fn both_ends_closed_need_two_rings() {
         ("sphere", sphere, [EndKind::Smooth, EndKind::Smooth]),
     ] {
         input.along = 2;
-        let e = build(&input).unwrap_err().to_string();
+        let e = build(&input, &Settings::default()).unwrap_err().to_string();
         assert!(
             e.contains("valence 2") && e.contains("along >= 3"),
             "{name}: {e}"
         );
         input.along = 3;
-        let model = build(&input).unwrap();
-        assert_eq!(model.ends, ends, "{name}");
+        let model = build(&input, &Settings::default()).unwrap();
+        assert_eq!(self::ends(&input), ends, "{name}");
         let tips: Vec<u32> = model.mesh.corners().iter().map(|c| c.vertex).collect();
         for (v, n) in valences(&model.mesh).into_iter().enumerate() {
             assert!(

@@ -15,14 +15,14 @@ use std::f64::consts::{PI, TAU};
 
 use arc::arc;
 use glam::DVec3;
-use profsubd::construct::sweep::revolve::RevolveInput;
-use profsubd::construct::sweep::sweep::SweepInput;
-use profsubd::construct::sweep::{revolve, sweep, SweptSurface};
 use profsubd::eval::limit_stencils;
 use profsubd::refine::refine_uniform;
+use profsubd::RevolveInput;
+use profsubd::SweepInput;
+use profsubd::{revolve, sweep, Fitted, Settings};
 
 /// Exact limit points densely over every face of the surface's mesh.
-fn dense_limit_points(s: &SweptSurface) -> Vec<DVec3> {
+fn dense_limit_points(s: &Fitted) -> Vec<DVec3> {
     let options = s.mesh.options().resolve();
     let fine = refine_uniform(&s.mesh, &options, 2).unwrap();
     limit_stencils(&fine, &options)
@@ -32,7 +32,7 @@ fn dense_limit_points(s: &SweptSurface) -> Vec<DVec3> {
 }
 
 /// Largest distance to the exact surface over the size (bounding-box diagonal of the data).
-fn relative_error(s: &SweptSurface, distance: &dyn Fn(DVec3) -> f64) -> f64 {
+fn relative_error(s: &Fitted, distance: &dyn Fn(DVec3) -> f64) -> f64 {
     let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
     for p in &s.targets {
         lo = lo.min(*p);
@@ -51,7 +51,7 @@ fn relative_error(s: &SweptSurface, distance: &dyn Fn(DVec3) -> f64) -> f64 {
 fn check_convergence(
     name: &str,
     min_rate: f64,
-    build: &dyn Fn(usize, usize) -> SweptSurface,
+    build: &dyn Fn(usize, usize) -> Fitted,
     distance: &dyn Fn(DVec3) -> f64,
 ) {
     let errors: Vec<f64> = [1, 2, 4]
@@ -80,7 +80,7 @@ fn revolved_semicircle_converges_to_the_sphere() {
         let mut input = RevolveInput::new(profile.clone());
         input.samples_profile = np;
         input.samples_around = na;
-        revolve(&input).unwrap()
+        revolve::build(&input, &Settings::default()).unwrap()
     };
     // Next to the grid caps' valence-3 vertices an interpolating Catmull-Clark fit is only
     // second order (O(κh²)). Rings graded towards the poles made that term fourth order, but
@@ -97,7 +97,7 @@ fn revolved_segments_converge_to_cylinder_and_cone() {
             let mut input = RevolveInput::new(profile.clone());
             input.samples_profile = np;
             input.samples_around = na;
-            revolve(&input).unwrap()
+            revolve::build(&input, &Settings::default()).unwrap()
         }
     };
     let (r, h) = (1.0, 2.0);
@@ -128,7 +128,7 @@ fn circle_swept_along_a_circle_converges_to_the_torus() {
         input.closed_trajectory = true;
         input.samples_profile = np;
         input.samples_trajectory = nt;
-        sweep(&input).unwrap()
+        sweep::build(&input, &Settings::default()).unwrap()
     };
     check_convergence("torus", 4.0, &build, &|p| {
         ((p.truncate().length() - big).hypot(p.z) - small).abs()

@@ -12,24 +12,26 @@ mod swept;
 use std::path::PathBuf;
 
 use mesh_compare::{assert_same, assert_targets, example_file, run_cli as profsubd};
-use profsubd::construct::sweep::revolve::RevolveInput;
-use profsubd::construct::sweep::sweep::SweepInput;
-use profsubd::construct::sweep::{revolve, sweep, SweptSurface};
+use profsubd::construct::settings::read_json;
 use profsubd::io::obj::read_obj_file;
 use profsubd::mesh::validate::check;
+use profsubd::RevolveInput;
+use profsubd::SweepInput;
+use profsubd::{revolve, sweep, Fitted};
 use swept::crease_degrees;
 
 fn example(name: &str, ext: &str) -> PathBuf {
     example_file("sweeps", name, ext)
 }
 
-fn build(name: &str) -> SweptSurface {
+fn build(name: &str) -> Fitted {
     let path = example(name, "json");
-    let text = std::fs::read_to_string(&path).unwrap();
     if name.starts_with("wine_glass") || name == "vase_cutaway" {
-        revolve(&RevolveInput::from_json(&text, &path).unwrap()).unwrap()
+        let (input, settings) = read_json::<RevolveInput>(&path).unwrap();
+        revolve::build(&input, &settings).unwrap()
     } else {
-        sweep(&SweepInput::from_json(&text, &path).unwrap()).unwrap()
+        let (input, settings) = read_json::<SweepInput>(&path).unwrap();
+        sweep::build(&input, &settings).unwrap()
     }
 }
 

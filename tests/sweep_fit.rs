@@ -7,10 +7,10 @@ mod swept;
 
 use std::f64::consts::{PI, TAU};
 
-use profsubd::construct::sweep::revolve::RevolveInput;
-use profsubd::construct::sweep::sweep::SweepInput;
-use profsubd::construct::sweep::{revolve, sweep};
 use profsubd::mesh::validate::check;
+use profsubd::RevolveInput;
+use profsubd::SweepInput;
+use profsubd::{revolve, sweep, Settings};
 use swept::relative_residual;
 
 fn circle(n: usize, r: f64) -> Vec<[f64; 2]> {
@@ -40,15 +40,26 @@ fn torus_sphere_cylinder_cone_interpolate_their_targets() {
         })
         .collect();
     let surfaces = [
-        ("torus", sweep(&torus).unwrap()),
-        ("sphere", revolve(&RevolveInput::new(semicircle)).unwrap()),
+        ("torus", sweep::build(&torus, &Settings::default()).unwrap()),
+        (
+            "sphere",
+            revolve::build(&RevolveInput::new(semicircle), &Settings::default()).unwrap(),
+        ),
         (
             "cylinder",
-            revolve(&RevolveInput::new(vec![[1.0, 0.0], [1.0, 2.0]])).unwrap(),
+            revolve::build(
+                &RevolveInput::new(vec![[1.0, 0.0], [1.0, 2.0]]),
+                &Settings::default(),
+            )
+            .unwrap(),
         ),
         (
             "cone",
-            revolve(&RevolveInput::new(vec![[1.0, 0.0], [0.0, 2.0]])).unwrap(),
+            revolve::build(
+                &RevolveInput::new(vec![[1.0, 0.0], [0.0, 2.0]]),
+                &Settings::default(),
+            )
+            .unwrap(),
         ),
     ];
     for (name, s) in &surfaces {
@@ -88,8 +99,9 @@ fn every_frame_kind_with_scale_and_morph_interpolates_its_targets() {
                 &trajectory[..]
             }
         );
-        let input = SweepInput::from_json(&json, std::path::Path::new("t.json")).unwrap();
-        let s = sweep(&input).unwrap();
+        let (input, settings) =
+            SweepInput::from_json(&json, std::path::Path::new("t.json")).unwrap();
+        let s = sweep::build(&input, &settings).unwrap();
         assert!(relative_residual(&s) <= 1e-10, "{frame}");
         // Four crease lines along the sweep, one per profile corner.
         assert_eq!(s.mesh.creases().len(), 4 * 24, "{frame}");

@@ -11,13 +11,13 @@ mod swept;
 use std::f64::consts::PI;
 
 use glam::DVec3;
-use profsubd::construct::profile::Caps;
-use profsubd::construct::sweep::revolve;
-use profsubd::construct::sweep::revolve::RevolveInput;
-use profsubd::construct::sweep::SweptSurface;
 use profsubd::mesh::validate::check;
 use profsubd::mesh::SHARPNESS_INFINITE;
+use profsubd::Caps;
 use profsubd::Error;
+use profsubd::Fitted;
+use profsubd::RevolveInput;
+use profsubd::{revolve, Settings};
 use random_profile::RandomProfiles;
 use swept::{crease_degrees, limit_samples, relative_residual};
 
@@ -34,13 +34,27 @@ fn vase() -> Vec<[f64; 2]> {
     vec![[1.0, 0.0], [1.4, 0.8], [1.3, 2.0], [0.9, 3.0], [0.9, 3.6]]
 }
 
-fn wedge(profile: Vec<[f64; 2]>, angle: f64, caps: Caps, np: usize, na: usize) -> RevolveInput {
+fn wedge(
+    profile: Vec<[f64; 2]>,
+    angle: f64,
+    caps: Caps,
+    np: usize,
+    na: usize,
+) -> (RevolveInput, Settings) {
     let mut input = RevolveInput::new(profile);
     input.angle_deg = angle;
-    input.caps = caps;
     input.samples_profile = np;
     input.samples_around = na;
-    input
+    let settings = Settings {
+        caps,
+        ..Settings::default()
+    };
+    (input, settings)
+}
+
+/// The revolution of `wedge`'s input under its settings.
+fn built((input, settings): (RevolveInput, Settings)) -> profsubd::Result<Fitted> {
+    revolve::build(&input, &settings)
 }
 
 /// A plane `n · x = d` (unit `n`).
@@ -69,7 +83,7 @@ fn cap_planes(angle: f64, z: &[f64]) -> Vec<Plane> {
 /// For each plane: how many faces have all four data points in it, and the largest distance
 /// from it of the limit surface of those faces sampled on a 9 × 9 (u, v) grid, over the
 /// diagonal.
-fn cap_flatness(s: &SweptSurface, planes: &[Plane]) -> Vec<(usize, f64)> {
+fn cap_flatness(s: &Fitted, planes: &[Plane]) -> Vec<(usize, f64)> {
     let diag = s.mesh.bounding_box_diagonal();
     planes
         .iter()
@@ -88,7 +102,7 @@ fn cap_flatness(s: &SweptSurface, planes: &[Plane]) -> Vec<(usize, f64)> {
 }
 
 /// Volume enclosed by the data-point quads (divergence theorem, each quad as two triangles).
-fn volume(s: &SweptSurface) -> f64 {
+fn volume(s: &Fitted) -> f64 {
     let p = |v: u32| s.targets[v as usize];
     (0..s.mesh.num_faces())
         .map(|f| {
@@ -103,11 +117,11 @@ fn volume(s: &SweptSurface) -> f64 {
 fn capped_vase_wedge_is_a_closed_solid_with_flat_caps() {
     let (np, na, k) = (8usize, 16usize, 4usize);
     let rings = np + 1;
-    let mut input = wedge(vase(), 270.0, Caps::Flat, np, na);
+    let (mut input, mut settings) = wedge(vase(), 270.0, Caps::Flat, np, na);
     // One crease ring, at point 2 (z = 2).
-    input.sharp_angle_deg = 60.0;
+    settings.sharp_angle_deg = 60.0;
     input.corners = vec![2];
-    let s = revolve(&input).unwrap();
+    let s = revolve::build(&input, &settings).unwrap();
     let r = check(&s.mesh);
     // Side, two flat sectors (two k × k patches each), two (R − 1) × k meridian caps.
     let faces = (rings - 1) * na + 2 * 2 * k * k + 2 * (rings - 1) * k;
@@ -140,9 +154,9 @@ fn capped_vase_wedge_is_a_closed_solid_with_flat_caps() {
     assert_eq!(s.mesh.corners().len(), 10);
     // Outward: the volume enclosed by the data-point quads is positive, 3/4 of the capped
     // full turn's (up to the polygon's chords: 16 sides over 270° or over 360°).
-    let mut full = wedge(vase(), 360.0, Caps::Flat, np, na);
-    (full.sharp_angle_deg, full.corners) = (60.0, vec![2]);
-    let full = revolve(&full).unwrap();
+    let (mut full, mut full_settings) = wedge(vase(), 360.0, Caps::Flat, np, na);
+    (full_settings.sharp_angle_deg, full.corners) = (60.0, vec![2]);
+    let full = revolve::build(&full, &full_settings).unwrap();
     let chord = |deg: f64| {
         let a = (deg / na as f64).to_radians();
         a.sin() / a
@@ -165,12 +179,12 @@ fn pole_sector_depth(k: usize, np: usize) -> usize {
     k.min((np - 1) / 2)
 }
 
-fn largest_valence(s: &SweptSurface) -> usize {
+fn largest_valence(s: &Fitted) -> usize {
     *check(&s.mesh).valences.keys().max().unwrap()
 }
 
 /// Largest distance of the limit surface (9 × 9 samples per face) from the unit sphere.
-fn sphere_distance(s: &SweptSurface) -> f64 {
+fn sphere_distance(s: &Fitted) -> f64 {
     let faces: Vec<u32> = (0..s.mesh.num_faces() as u32).collect();
     limit_samples(s, &faces, 8)
         .iter()
@@ -182,7 +196,7 @@ fn sphere_distance(s: &SweptSurface) -> f64 {
 fn open_sphere_wedge_has_sector_poles_with_corner_apexes() {
     let (np, na, k) = (12usize, 8usize, 2usize);
     let rings = np + 1 - 2 * pole_sector_depth(k, np);
-    let s = revolve(&wedge(semicircle(np), 90.0, Caps::Open, np, na)).unwrap();
+    let s = built(wedge(semicircle(np), 90.0, Caps::Open, np, na)).unwrap();
     let r = check(&s.mesh);
     assert_eq!(r.num_faces, (rings - 1) * na + 2 * 2 * k * k);
     assert_eq!(
@@ -208,7 +222,7 @@ fn open_sphere_wedge_has_sector_poles_with_corner_apexes() {
     assert!(relative_residual(&s) <= 1e-10);
     // Distance to the sphere (2.0e-3 measured), falling about 4× per doubling.
     let d = sphere_distance(&s);
-    let fine = revolve(&wedge(semicircle(24), 90.0, Caps::Open, 24, 16)).unwrap();
+    let fine = built(wedge(semicircle(24), 90.0, Caps::Open, 24, 16)).unwrap();
     let rate = d / sphere_distance(&fine);
     println!(
         "open 90° sphere wedge, 12 x 8 intervals: distance {d:.3e}, ratio per doubling {rate:.1}"
@@ -220,7 +234,7 @@ fn open_sphere_wedge_has_sector_poles_with_corner_apexes() {
 fn capped_sphere_wedge_closes_with_two_flat_meridian_caps() {
     let (np, na, k) = (12usize, 16usize, 4usize);
     let rings = np + 1 - 2 * pole_sector_depth(k, np);
-    let s = revolve(&wedge(semicircle(np), 270.0, Caps::Flat, np, na)).unwrap();
+    let s = built(wedge(semicircle(np), 270.0, Caps::Flat, np, na)).unwrap();
     let r = check(&s.mesh);
     // The meridian caps' best-shaped layout is bent round the column's ends by a = 1
     // (`(k + a) × (R − 1 − 2a)` quads each).
@@ -251,7 +265,7 @@ fn capped_sphere_wedge_closes_with_two_flat_meridian_caps() {
 #[test]
 fn capped_half_cone_has_a_tip_and_a_flat_sector() {
     let (np, na) = (6usize, 8usize);
-    let s = revolve(&wedge(
+    let s = built(wedge(
         vec![[1.0, 0.0], [0.0, 2.0]],
         180.0,
         Caps::Flat,
@@ -281,7 +295,7 @@ fn capped_half_cone_has_a_tip_and_a_flat_sector() {
 
 #[test]
 fn capped_full_turn_cylinder_gets_flat_discs() {
-    let s = revolve(&wedge(
+    let s = built(wedge(
         vec![[1.0, 0.0], [1.0, 2.0]],
         360.0,
         Caps::Flat,
@@ -306,7 +320,7 @@ fn capped_full_turn_cylinder_gets_flat_discs() {
 
 #[test]
 fn bad_caps_and_angles_are_refused() {
-    let msg = |input: RevolveInput| match revolve(&input) {
+    let msg = |input: (RevolveInput, Settings)| match built(input) {
         Err(Error::InvalidArgument(m)) => m,
         other => panic!("expected an error, got {other:?}"),
     };
@@ -342,7 +356,7 @@ fn bad_caps_and_angles_are_refused() {
     assert!(msg(wedge(ring, 90.0, Caps::Flat, 8, 8)).contains("one height"));
     assert!(msg(wedge(semicircle(2), 90.0, Caps::Flat, 2, 8)).contains("two rings"));
     let mut crossing = wedge(vase(), 90.0, Caps::Flat, 8, 8);
-    crossing.profile[2][0] = -0.1;
+    crossing.0.profile[2][0] = -0.1;
     assert!(msg(crossing).contains("crosses the axis"));
 }
 
@@ -351,7 +365,7 @@ fn capped_wedges_close_at_every_angle_and_sector_size() {
     for na in [4usize, 8, 12] {
         for angle in [30.0, 180.0, 350.0] {
             for profile in [vase(), semicircle(8)] {
-                let s = revolve(&wedge(profile, angle, Caps::Flat, 8, na)).unwrap();
+                let s = built(wedge(profile, angle, Caps::Flat, 8, na)).unwrap();
                 let what = format!("{na} around, {angle}°");
                 let r = check(&s.mesh);
                 assert_eq!(r.euler_characteristic, 2, "{what}");
@@ -364,7 +378,7 @@ fn capped_wedges_close_at_every_angle_and_sector_size() {
                 }
             }
             // Open, with two poles: a disc whose boundary runs through both apexes.
-            let s = revolve(&wedge(semicircle(8), angle, Caps::Open, 8, na)).unwrap();
+            let s = built(wedge(semicircle(8), angle, Caps::Open, 8, na)).unwrap();
             let r = check(&s.mesh);
             assert_eq!((r.euler_characteristic, r.num_boundary_loops), (1, 1));
             assert!(r.is_manifold() && r.is_consistently_oriented());
@@ -377,13 +391,13 @@ fn capped_wedges_close_at_every_angle_and_sector_size() {
 
 #[test]
 fn caps_stay_flat_under_semi_sharp_chaikin_edge_only() {
-    let mut input = wedge(vase(), 270.0, Caps::Flat, 8, 16);
+    let (mut input, mut settings) = wedge(vase(), 270.0, Caps::Flat, 8, 16);
     input.corners = vec![2];
-    input.sharp_angle_deg = 60.0;
-    input.crease_sharpness = 2.0;
-    input.boundary = profsubd::BoundaryInterpolation::EdgeOnly;
-    input.crease_method = profsubd::CreaseMethod::Chaikin;
-    let s = revolve(&input).unwrap();
+    settings.sharp_angle_deg = 60.0;
+    settings.crease_sharpness = 2.0;
+    settings.boundary = profsubd::BoundaryInterpolation::EdgeOnly;
+    settings.crease_method = profsubd::CreaseMethod::Chaikin;
+    let s = revolve::build(&input, &settings).unwrap();
     // The crease ring is semi-sharp, the cap creases infinitely sharp.
     let sharp: Vec<f32> = s.mesh.creases().iter().map(|c| c.sharpness).collect();
     assert_eq!(sharp.iter().filter(|&&x| x == 2.0).count(), 16);
@@ -409,9 +423,9 @@ fn capped_cup_wall_is_filled_by_a_bent_layout() {
         [0.9, 0.2],
         [0.0, 0.2],
     ];
-    let mut input = wedge(cup, 180.0, Caps::Flat, 24, 8);
-    input.interpolation = profsubd::curves::Interpolation::Polyline;
-    let s = revolve(&input).unwrap();
+    let (input, mut settings) = wedge(cup, 180.0, Caps::Flat, 24, 8);
+    settings.interpolation = profsubd::curves::Interpolation::Polyline;
+    let s = revolve::build(&input, &settings).unwrap();
     let r = check(&s.mesh);
     assert_eq!(r.euler_characteristic, 2);
     assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
@@ -450,8 +464,8 @@ fn random_profiles_give_closed_solids_or_a_specific_refusal() {
         };
         let na = 4 * (1 + (random.next() * 6.0) as usize);
         let np = 2 + (random.next() * 20.0) as usize;
-        let input = wedge(pts.clone(), angle, caps, np, na);
-        let parts = match input.mesh_parts() {
+        let (input, settings) = wedge(pts.clone(), angle, caps, np, na);
+        let parts = match input.mesh_parts(&settings) {
             Ok(parts) => parts,
             Err(Error::InvalidArgument(_)) => continue,
             Err(e) => panic!("{input:?}: {e}"),

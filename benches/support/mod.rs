@@ -4,14 +4,15 @@
 
 use std::path::Path;
 
-use profsubd::construct::profile::{build, ProfileInput, ProfileModel};
+use profsubd::construct::settings::read_json;
+use profsubd::profile::{build, ProfileInput};
+use profsubd::Fitted;
 
 /// The bottle of `examples/profiles/bottle.json` sampled `around × along`.
-pub fn bottle(around: u32, along: u32) -> ProfileModel {
+pub fn bottle(around: u32, along: u32) -> Fitted {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/profiles/bottle.json");
-    let text = std::fs::read_to_string(&path).expect("examples/profiles/bottle.json");
-    let mut input = ProfileInput::from_json(&text, &path).expect("bottle input");
+    let (mut input, settings) = read_json::<ProfileInput>(&path).expect("bottle input");
     input.around = around;
     input.along = along;
-    build(&input).expect("bottle model")
+    build(&input, &settings).expect("bottle model")
 }

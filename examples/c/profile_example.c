@@ -35,7 +35,7 @@ int main(int argc, char **argv) {
     const char *path = argc > 1 ? argv[1] : "profile.obj";
     profsubd_profile_curves curves;
     profsubd_options *options = NULL;
-    profsubd_profile *model = NULL;
+    profsubd_fitted *model = NULL;
     profsubd_mesh *mesh = NULL;
     profsubd_mesh_report rep;
     size_t nv = 0, ncreases = 0, needed = 0;
@@ -50,19 +50,18 @@ int main(int argc, char **argv) {
     curves.c2_points = sizeof c2 / sizeof c2[0] / 2;
 
     CHECK(profsubd_options_new(&options));
-    CHECK(profsubd_options_set_around(options, 16));
-    CHECK(profsubd_options_set_along(options, 16));
+    CHECK(profsubd_options_set_samples(options, 16, 16));
     CHECK(profsubd_options_set_sharp_angle(options, 30.0));
     /* A bad setting is refused with a message, and the setting stays as it was. */
-    if (profsubd_options_set_around(options, 18) != PROFSUBD_ERROR_INVALID_ARGUMENT) {
-        fprintf(stderr, "around = 18 was accepted\n");
+    if (profsubd_options_set_sharp_angle(options, 190.0) != PROFSUBD_ERROR_INVALID_ARGUMENT) {
+        fprintf(stderr, "a sharp angle of 190 degrees was accepted\n");
         return 1;
     }
     printf("refused as expected: %s\n", profsubd_last_error_message());
 
     CHECK(profsubd_profile_build(&curves, options, &model));
-    CHECK(profsubd_profile_get_fit_residual(model, &residual, &tolerance));
-    CHECK(profsubd_profile_get_mesh(model, &mesh));
+    CHECK(profsubd_fitted_get_fit_residual(model, &residual, &tolerance));
+    CHECK(profsubd_fitted_get_mesh(model, &mesh));
     CHECK(profsubd_mesh_num_vertices(mesh, &nv));
     CHECK(profsubd_mesh_num_creases(mesh, &ncreases));
     memset(&rep, 0, sizeof rep);
@@ -70,7 +69,7 @@ int main(int argc, char **argv) {
     CHECK(profsubd_mesh_check(mesh, &rep));
 
     /* The data points: ask for the size, then copy. */
-    if (profsubd_profile_get_targets(model, NULL, 0, &needed) != PROFSUBD_ERROR_BUFFER_TOO_SMALL ||
+    if (profsubd_fitted_get_targets(model, NULL, 0, &needed) != PROFSUBD_ERROR_BUFFER_TOO_SMALL ||
         needed != 3 * nv) {
         fprintf(stderr, "targets size query gave %lu for %lu vertices\n", (unsigned long)needed,
                 (unsigned long)nv);
@@ -80,7 +79,7 @@ int main(int argc, char **argv) {
     if (targets == NULL) {
         return 1;
     }
-    CHECK(profsubd_profile_get_targets(model, targets, needed, &needed));
+    CHECK(profsubd_fitted_get_targets(model, targets, needed, &needed));
 
     printf("%lu vertices, %lu faces, %lu creases, Euler characteristic %lld, %lu boundary edges, "
            "fit residual %.3g (tolerance %.3g)\n",
@@ -103,7 +102,7 @@ int main(int argc, char **argv) {
     }
     free(targets);
     profsubd_mesh_free(mesh);
-    profsubd_profile_free(model);
+    profsubd_fitted_free(model);
     profsubd_options_free(options);
     return failed;
 }

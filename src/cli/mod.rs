@@ -11,6 +11,7 @@
 
 pub mod check;
 pub mod check_surface;
+pub mod construct;
 pub mod convert;
 pub mod limit;
 pub mod profile;

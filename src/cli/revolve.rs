@@ -1,14 +1,13 @@
 //! `profsubd revolve INPUT.json -o OUT.obj [--targets TARGETS.txt]`: a profile `(r, z)`
-//! turned about the z axis (JSON keys and defaults: [`crate::construct::sweep::revolve`](mod@crate::construct::sweep::revolve)).
+//! turned about the z axis (JSON keys and defaults: [`crate::construct::revolve`]).
 
 use std::path::PathBuf;
 
 use clap::Args;
 
-use super::profile::FitFlags;
-use super::sweep::{read_text, write_surface, SurfaceOutput};
-use crate::construct::sweep::revolve;
-use crate::construct::sweep::revolve::RevolveInput;
+use super::construct::{run as run_construction, FitFlags, SurfaceOutput};
+use crate::construct::revolve::{build, RevolveInput};
+use crate::construct::settings::read_json;
 use crate::error::Result;
 
 /// Arguments of `revolve`.
@@ -28,13 +27,6 @@ pub struct RevolveArgs {
 
 /// Run `revolve`; returns exit code 0 on success. Nothing is written on error.
 pub fn run(args: &RevolveArgs) -> Result<i32> {
-    let mut input = RevolveInput::from_json(&read_text(&args.input)?, &args.input)?;
-    let i = &mut input;
-    args.fit.apply(
-        &mut i.boundary,
-        &mut i.crease_method,
-        &mut i.crease_sharpness,
-    );
-    write_surface(&revolve(&input)?, &args.out)?;
-    Ok(0)
+    let input = read_json::<RevolveInput>(&args.input)?;
+    run_construction(input, build, &args.out, &args.fit)
 }

@@ -42,6 +42,25 @@ impl FfiError {
     }
 }
 
+/// The `int32_t` value `value` of the enumerated input `what` as the Rust value `table`
+/// pairs it with (each C constant with its Rust value). Errors: `what value V is out of
+/// range; expected 0, 1 or 2` (or `0 to 6` for longer tables).
+pub fn enum_arg<T: Copy>(what: &str, value: i32, table: &[(i32, T)]) -> FfiResult<T> {
+    if let Some(&(_, t)) = table.iter().find(|(v, _)| *v == value) {
+        return Ok(t);
+    }
+    let values: Vec<String> = table.iter().map(|(v, _)| v.to_string()).collect();
+    let allowed = match values.as_slice() {
+        [] => String::from("nothing"),
+        [one] => one.clone(),
+        [first @ .., last] if first.len() < 3 => format!("{} or {last}", first.join(", ")),
+        [first, .., last] => format!("{first} to {last}"),
+    };
+    Err(FfiError::invalid_argument(format!(
+        "{what} value {value} is out of range; expected {allowed}"
+    )))
+}
+
 impl From<Error> for FfiError {
     fn from(e: Error) -> Self {
         FfiError {
@@ -80,17 +99,16 @@ pub fn last_error() -> String {
     LAST_ERROR.with(|e| e.borrow().to_string_lossy().into_owned())
 }
 
-/// The message of the most recent call on this thread that returned a `profsubd_status`:
-/// "" if that call returned `PROFSUBD_OK`. Never NULL. The string belongs to the library and
-/// stays valid until the next profsubd call on the same thread; copy it to keep it.
-#[no_mangle]
-pub extern "C" fn profsubd_last_error_message() -> *const c_char {
-    crate::ffi::panic::guard(|| LAST_ERROR.with(|e| e.borrow().as_ptr()))
+/// This thread's last error message as a C string, valid until the next call that sets or
+/// clears it on this thread.
+pub fn last_error_ptr() -> *const c_char {
+    LAST_ERROR.with(|e| e.borrow().as_ptr())
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ffi::message::profsubd_last_error_message;
     use std::ffi::CStr;
 
     fn c_message() -> String {
@@ -117,5 +135,20 @@ mod tests {
         let e = FfiError::from(Error::invalid_mesh("face 3 has 2 vertices"));
         assert_eq!(e.status, PROFSUBD_ERROR_INVALID_MESH);
         assert_eq!(e.message, "invalid mesh: face 3 has 2 vertices");
+    }
+
+    #[test]
+    fn enum_args_map_their_table_and_name_the_allowed_values() {
+        let two = [(0, 'a'), (1, 'b')];
+        assert_eq!(enum_arg("x", 1, &two), Ok('b'));
+        let e = enum_arg("x", 2, &two).unwrap_err();
+        assert_eq!(e.status, PROFSUBD_ERROR_INVALID_ARGUMENT);
+        assert_eq!(e.message, "x value 2 is out of range; expected 0 or 1");
+        let three = [(0, 'a'), (1, 'b'), (2, 'c')];
+        let e = enum_arg("y", -1, &three).unwrap_err();
+        assert_eq!(e.message, "y value -1 is out of range; expected 0, 1 or 2");
+        let seven: Vec<(i32, i32)> = (0..7).map(|v| (v, v)).collect();
+        let e = enum_arg("z", 7, &seven).unwrap_err();
+        assert_eq!(e.message, "z value 7 is out of range; expected 0 to 6");
     }
 }

@@ -1,105 +1,87 @@
-//! The accessors shared by the C result objects of fitted constructions
-//! (`profsubd_profile`, `profsubd_swept`): fitted mesh, data points, fit residual. Each C
-//! function is a one-line call into these.
+//! The result object of every construction, `profsubd_fitted`: the fitted control mesh, the
+//! data points it interpolates, the fit residual and the surface report
+//! ([`crate::construct::Fitted`]).
 
-use glam::DVec3;
+use std::sync::Arc;
 
-use crate::construct::design::SurfaceReport;
-use crate::construct::profile::ProfileModel;
-use crate::construct::sweep::SweptSurface;
-use crate::error::Result;
+use crate::construct::Fitted;
 use crate::ffi::handle::{self, Handle};
-use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh};
-use crate::ffi::panic::status_call;
+use crate::ffi::mesh::{profsubd_mesh, MeshData};
+use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::{arg_out, arg_out_opt, copy_slice};
 use crate::ffi::status::profsubd_status;
-use crate::fit::FitReport;
-use crate::mesh::Mesh;
 
-/// A fitted model: a control mesh whose vertices' limit positions are the data points.
-pub trait Fitted {
-    /// The fitted control mesh.
-    fn mesh(&self) -> &Mesh;
-    /// The data point of each control vertex, in vertex order.
-    fn targets(&self) -> &[DVec3];
-    /// The achieved residual and its tolerance.
-    fn fit(&self) -> &FitReport;
-    /// Distance to the design surface, folds, undulation (computed on the first call).
-    fn surface_report(&self) -> Result<&SurfaceReport>;
+/// A fitted construction (opaque): made by `profsubd_profile_build`,
+/// `profsubd_profile_build_default`, `profsubd_revolve` or `profsubd_sweep`; released with
+/// `profsubd_fitted_free`. Immutable: usable from several threads at once.
+pub struct profsubd_fitted {
+    _private: [u8; 0],
 }
 
-/// Both constructions' results hold the three as fields of the same names.
-macro_rules! fitted_fields {
-    ($($t:ty),*) => {$(
-        impl Fitted for $t {
-            fn mesh(&self) -> &Mesh {
-                &self.mesh
-            }
-            fn targets(&self) -> &[DVec3] {
-                &self.targets
-            }
-            fn fit(&self) -> &FitReport {
-                &self.fit
-            }
-            fn surface_report(&self) -> Result<&SurfaceReport> {
-                <$t>::surface_report(self)
-            }
-        }
-    )*};
+impl Handle for profsubd_fitted {
+    type Inner = Fitted;
+    const MAGIC: u64 = u64::from_le_bytes(*b"psd-FITD");
+    const NAME: &'static str = "profsubd_fitted";
 }
 
-fitted_fields!(ProfileModel, SweptSurface);
+/// `*out` = a new handle for the result of a construction.
+pub fn new_fitted_handle(fitted: Fitted) -> *mut profsubd_fitted {
+    handle::into_raw(fitted)
+}
 
-/// `*out` = a new mesh handle with a copy of the fitted mesh behind `model` (named `name`).
-pub unsafe fn get_mesh<H: Handle>(
-    model: *const H,
-    name: &str,
+/// Release a fitted construction. NULL is a no-op. Meshes taken from it stay valid.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_fitted_free(fitted: *mut profsubd_fitted) {
+    guard(|| handle::free(fitted))
+}
+
+/// A new mesh handle (caller-owned, released with `profsubd_mesh_free`) with the fitted
+/// control mesh: quads, crease and corner tags, option tags. The mesh is shared, not copied.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_fitted_get_mesh(
+    fitted: *const profsubd_fitted,
     out: *mut *mut profsubd_mesh,
-) -> profsubd_status
-where
-    H::Inner: Fitted,
-{
+) -> profsubd_status {
     status_call(|| {
         let out = arg_out(out, "out")?;
-        out.write(new_mesh_handle(handle::borrow(model, name)?.mesh().clone()));
+        let mesh = Arc::clone(&handle::borrow(fitted, "fitted")?.mesh);
+        out.write(handle::into_raw(MeshData::shared(mesh)));
         Ok(())
     })
 }
 
-/// Copy out the data points, 3 doubles each (copy-out protocol in doubles).
-pub unsafe fn get_targets<H: Handle>(
-    model: *const H,
-    name: &str,
+/// Copy the data points: 3 doubles per control vertex, in vertex order; vertex `i`'s limit
+/// position equals point `i`. `capacity` and `*needed` count doubles; copy-out protocol as
+/// `profsubd_mesh_get_positions`.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_fitted_get_targets(
+    fitted: *const profsubd_fitted,
     out: *mut f64,
     capacity: usize,
     needed: *mut usize,
-) -> profsubd_status
-where
-    H::Inner: Fitted,
-{
+) -> profsubd_status {
     copy_slice(
-        (model, name),
+        (fitted, "fitted"),
         (out, "out", capacity, needed),
         (1, "doubles"),
-        |m| {
-            let targets = m.targets();
+        |f: &Fitted| {
+            let targets = &f.targets;
             Ok((3 * targets.len(), targets.iter().flat_map(|t| t.to_array())))
         },
     )
 }
 
-/// Write the fit's residual and tolerance to the outputs that are not NULL.
-pub unsafe fn get_fit_residual<H: Handle>(
-    model: *const H,
-    name: &str,
+/// The fit's achieved residual (largest distance between a vertex's limit position and its
+/// data point) and the tolerance it met (1e-10 × the data points' bounding-box diagonal).
+/// Either output may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_fitted_get_fit_residual(
+    fitted: *const profsubd_fitted,
     residual: *mut f64,
     tolerance: *mut f64,
-) -> profsubd_status
-where
-    H::Inner: Fitted,
-{
+) -> profsubd_status {
     status_call(|| {
-        let fit = handle::borrow(model, name)?.fit();
+        let fit = handle::borrow(fitted, "fitted")?.fit;
         let (r, t) = (
             arg_out_opt(residual, "residual")?,
             arg_out_opt(tolerance, "tolerance")?,
@@ -114,21 +96,22 @@ where
     })
 }
 
-/// Write the largest and mean distance from the limit surface to the design surface (over
-/// the bounding-box diagonal) to the outputs that are not NULL.
-pub unsafe fn get_design_distance<H: Handle>(
-    model: *const H,
-    name: &str,
+/// The largest and mean distance from the limit surface to the design surface between the
+/// data points, over the limit surface's bounding-box diagonal: the limit and the design
+/// surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear
+/// between the face's data points' parameters), measured along the design surface's
+/// normal (see the README, "Valid surfaces"). Computed (with the fold check) on the first
+/// call of this or `profsubd_fitted_get_surface_quality`. Either output may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_fitted_get_design_distance(
+    fitted: *const profsubd_fitted,
     max: *mut f64,
     mean: *mut f64,
-) -> profsubd_status
-where
-    H::Inner: Fitted,
-{
+) -> profsubd_status {
     status_call(|| {
-        let model = handle::borrow(model, name)?;
+        let fitted = handle::borrow(fitted, "fitted")?;
         let (max, mean) = (arg_out_opt(max, "max")?, arg_out_opt(mean, "mean")?);
-        let report = model.surface_report()?;
+        let report = fitted.surface_report()?;
         if let Some(m) = max {
             m.write(report.max_design_distance);
         }
@@ -139,26 +122,25 @@ where
     })
 }
 
-/// Write the number of folded faces, the worst normal reversal (degrees) and the undulation
-/// (bending energy over the design surface's) to the outputs that are not NULL.
-pub unsafe fn get_surface_quality<H: Handle>(
-    model: *const H,
-    name: &str,
+/// The number of control faces whose limit surface folds (the fold check's criterion,
+/// `eval::folds`, with default settings), the worst normal reversal in degrees (above 90
+/// where it folds) and the undulation: the limit surface's bending energy over the design
+/// surface's (1 = as fair as the design). Any output may be NULL.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_fitted_get_surface_quality(
+    fitted: *const profsubd_fitted,
     folded_faces: *mut usize,
     worst_reversal_deg: *mut f64,
     undulation: *mut f64,
-) -> profsubd_status
-where
-    H::Inner: Fitted,
-{
+) -> profsubd_status {
     status_call(|| {
-        let model = handle::borrow(model, name)?;
+        let fitted = handle::borrow(fitted, "fitted")?;
         let (folded, worst, und) = (
             arg_out_opt(folded_faces, "folded_faces")?,
             arg_out_opt(worst_reversal_deg, "worst_reversal_deg")?,
             arg_out_opt(undulation, "undulation")?,
         );
-        let report = model.surface_report()?;
+        let report = fitted.surface_report()?;
         if let Some(o) = folded {
             o.write(report.folded_faces);
         }

@@ -2,7 +2,7 @@
 
 use std::ffi::CString;
 use std::mem::size_of;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use glam::DVec3;
 
@@ -23,7 +23,8 @@ pub struct profsubd_mesh {
 /// What a `profsubd_mesh` handle holds.
 #[derive(Debug)]
 pub struct MeshData {
-    mesh: Mesh,
+    /// Shared with the fitted construction it came from, if any (meshes are immutable).
+    mesh: Arc<Mesh>,
     /// What the OBJ reader ignored, for `profsubd_mesh_get_warning`.
     warnings: Vec<CString>,
     /// The base level (edges, valences), built on first use; `OnceLock` keeps the handle
@@ -37,6 +38,15 @@ impl MeshData {
         Self::with_warnings(mesh, Vec::new())
     }
 
+    /// Share a mesh (no copy).
+    pub fn shared(mesh: Arc<Mesh>) -> Self {
+        MeshData {
+            mesh,
+            warnings: Vec::new(),
+            level: OnceLock::new(),
+        }
+    }
+
     /// Wrap a mesh read with `warnings` (interior NUL bytes become spaces).
     pub fn with_warnings(mesh: Mesh, warnings: Vec<String>) -> Self {
         let warnings = warnings
@@ -44,7 +54,7 @@ impl MeshData {
             .map(|w| CString::new(w.replace('\0', " ")).unwrap_or_default())
             .collect();
         MeshData {
-            mesh,
+            mesh: Arc::new(mesh),
             warnings,
             level: OnceLock::new(),
         }
@@ -440,7 +450,7 @@ pub unsafe extern "C" fn profsubd_mesh_get_corners(
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
     use crate::ffi::error::last_error;
     use crate::ffi::status::profsubd_status::*;
@@ -455,11 +465,6 @@ pub(crate) mod tests {
         profsubd_mesh_num_corners,
         profsubd_mesh_num_holes,
     ];
-
-    /// The unit square as a one-quad mesh.
-    pub(crate) fn quad_mesh() -> Mesh {
-        Mesh::from_parts(crate::mesh::tests::quad()).unwrap()
-    }
 
     /// Two quads sharing edge 1-4, with a crease on it, a corner and a hole.
     struct Arrays {

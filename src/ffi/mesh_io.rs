@@ -217,7 +217,7 @@ mod tests {
                 profsubd_mesh_get_warning(f, 0, &mut w),
                 PROFSUBD_ERROR_INVALID_HANDLE
             );
-            let q = crate::ffi::mesh::new_mesh_handle(crate::ffi::mesh::tests::quad_mesh());
+            let q = crate::ffi::mesh::new_mesh_handle(crate::test_support::quad_mesh());
             assert_eq!(
                 profsubd_mesh_write_obj(q, null()),
                 PROFSUBD_ERROR_NULL_ARGUMENT

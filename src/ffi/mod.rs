@@ -50,6 +50,7 @@
 #![allow(non_camel_case_types)]
 #![allow(clippy::missing_safety_doc)]
 
+pub mod construct;
 pub mod error;
 pub mod evaluator;
 pub mod fitted;
@@ -59,17 +60,20 @@ pub mod limit;
 pub mod mesh;
 pub mod mesh_io;
 pub mod mesh_topology;
+pub mod message;
 pub mod options;
 pub mod osd_hazards;
 pub mod panic;
 pub mod profile;
 pub mod ptr;
 pub mod refine;
+pub mod revolve;
 pub mod status;
 pub mod sweep;
 pub mod version;
 
 pub use evaluator::profsubd_evaluator;
+pub use fitted::profsubd_fitted;
 pub use folds::profsubd_fold_report;
 pub use limit::profsubd_stencil_table;
 pub use mesh::{profsubd_mesh, profsubd_mesh_desc};

@@ -5,7 +5,11 @@
 //! working unchanged and never see a layout change. Settings not set stay unset, so the
 //! precedence rule holds: explicit option > the mesh file's tag > default.
 
-use crate::ffi::error::{FfiError, FfiResult};
+use std::borrow::Cow;
+
+use crate::construct::sweep::frames::FrameKind;
+use crate::construct::Settings;
+use crate::ffi::error::{enum_arg, FfiResult};
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::arg_out;
@@ -14,6 +18,7 @@ use crate::mesh::Mesh;
 use crate::options::{
     BoundaryInterpolation, CreaseMethod, PartialOptions, SubdivOptions, TriangleSubdivision,
 };
+use crate::refine::VertexOrder;
 
 /// Values for `profsubd_options_set_boundary` (passed as `int32_t`).
 #[repr(C)]
@@ -54,17 +59,65 @@ pub struct profsubd_options {
     _private: [u8; 0],
 }
 
-/// What a `profsubd_options` handle holds. Helpers adding settings add fields here.
+/// What a `profsubd_options` handle holds: plain data, so that this module imports none of
+/// the modules whose setters write it. Helpers adding settings add fields here.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct OptionsData {
     /// Subdivision rules set explicitly by the caller.
     pub subdiv: PartialOptions,
-    /// Profile construction settings (`src/ffi/profile.rs`).
-    pub profile: crate::ffi::profile::ProfileSettings,
-    /// Revolution and sweep settings (`src/ffi/sweep.rs`).
-    pub sweep: crate::ffi::sweep::SweepSettings,
-    /// Uniform refinement settings (`src/ffi/refine.rs`).
-    pub refine: crate::ffi::refine::RefineSettings,
+    /// The constructions' shared settings (their boundary and crease method are `subdiv`'s:
+    /// see [`OptionsData::settings`]); setters in `src/ffi/construct.rs`.
+    pub settings: Settings,
+    /// The construction inputs' settings (sampling, revolution angle, sweep frame...).
+    pub construct: ConstructOptions,
+    /// Order of the child vertices of uniform refinement (`src/ffi/refine.rs`).
+    pub order: VertexOrder,
+}
+
+/// The settings of the construction inputs an options object holds; unset ones take the
+/// input's defaults.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ConstructOptions {
+    /// Sample intervals along the profile, and around the axis (profile, revolution) or
+    /// along the trajectory (sweep).
+    pub samples: Option<[u32; 2]>,
+    /// Revolution angle, degrees.
+    pub angle_deg: Option<f64>,
+    /// Whether the sweep's profile and trajectory are closed.
+    pub closed: [bool; 2],
+    /// Frame along the sweep's trajectory.
+    pub frame: Option<FrameKind>,
+    /// Profile scale at the start and end of the trajectory.
+    pub scale: Option<[f64; 2]>,
+    /// Profile the sweep morphs into.
+    pub profile_end: Option<Vec<[f64; 2]>>,
+    /// Point indices forced to be corners: profile, trajectory.
+    pub corners: [Vec<usize>; 2],
+}
+
+impl OptionsData {
+    /// The constructions' settings: those set, with the boundary interpolation and crease
+    /// method set by `profsubd_options_set_boundary` / `_set_crease_method` (default
+    /// otherwise).
+    pub fn settings(&self) -> Settings {
+        let d = Settings::default();
+        Settings {
+            boundary: self.subdiv.boundary.unwrap_or(d.boundary),
+            crease_method: self.subdiv.crease_method.unwrap_or(d.crease_method),
+            ..self.settings
+        }
+    }
+}
+
+/// The options behind `options`, or nothing set for NULL.
+pub unsafe fn options_or_default<'a>(
+    options: *const profsubd_options,
+) -> FfiResult<Cow<'a, OptionsData>> {
+    if options.is_null() {
+        Ok(Cow::Owned(OptionsData::default()))
+    } else {
+        handle::borrow(options, "options").map(Cow::Borrowed)
+    }
 }
 
 impl Handle for profsubd_options {
@@ -99,12 +152,6 @@ pub unsafe extern "C" fn profsubd_options_free(options: *mut profsubd_options) {
     guard(|| handle::free(options))
 }
 
-fn out_of_range(what: &str, value: i32, allowed: &str) -> FfiError {
-    FfiError::invalid_argument(format!(
-        "{what} value {value} is out of range; expected {allowed}"
-    ))
-}
-
 /// Set the boundary interpolation: `PROFSUBD_BOUNDARY_NONE`, `PROFSUBD_BOUNDARY_EDGE_ONLY` or
 /// `PROFSUBD_BOUNDARY_EDGE_AND_CORNER`.
 #[no_mangle]
@@ -115,14 +162,18 @@ pub unsafe extern "C" fn profsubd_options_set_boundary(
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
         use profsubd_boundary::*;
-        o.subdiv.boundary = Some(match boundary {
-            v if v == PROFSUBD_BOUNDARY_NONE as i32 => BoundaryInterpolation::None,
-            v if v == PROFSUBD_BOUNDARY_EDGE_ONLY as i32 => BoundaryInterpolation::EdgeOnly,
-            v if v == PROFSUBD_BOUNDARY_EDGE_AND_CORNER as i32 => {
-                BoundaryInterpolation::EdgeAndCorner
-            }
-            v => return Err(out_of_range("boundary", v, "0, 1 or 2")),
-        });
+        let table = [
+            (PROFSUBD_BOUNDARY_NONE as i32, BoundaryInterpolation::None),
+            (
+                PROFSUBD_BOUNDARY_EDGE_ONLY as i32,
+                BoundaryInterpolation::EdgeOnly,
+            ),
+            (
+                PROFSUBD_BOUNDARY_EDGE_AND_CORNER as i32,
+                BoundaryInterpolation::EdgeAndCorner,
+            ),
+        ];
+        o.subdiv.boundary = Some(enum_arg("boundary", boundary, &table)?);
         Ok(())
     })
 }
@@ -136,11 +187,11 @@ pub unsafe extern "C" fn profsubd_options_set_crease_method(
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
         use profsubd_crease_method::*;
-        o.subdiv.crease_method = Some(match method {
-            v if v == PROFSUBD_CREASE_UNIFORM as i32 => CreaseMethod::Uniform,
-            v if v == PROFSUBD_CREASE_CHAIKIN as i32 => CreaseMethod::Chaikin,
-            v => return Err(out_of_range("crease method", v, "0 or 1")),
-        });
+        let table = [
+            (PROFSUBD_CREASE_UNIFORM as i32, CreaseMethod::Uniform),
+            (PROFSUBD_CREASE_CHAIKIN as i32, CreaseMethod::Chaikin),
+        ];
+        o.subdiv.crease_method = Some(enum_arg("crease method", method, &table)?);
         Ok(())
     })
 }
@@ -154,11 +205,17 @@ pub unsafe extern "C" fn profsubd_options_set_triangle_rule(
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
         use profsubd_triangle_rule::*;
-        o.subdiv.triangles = Some(match rule {
-            v if v == PROFSUBD_TRIANGLES_CATMARK as i32 => TriangleSubdivision::Catmark,
-            v if v == PROFSUBD_TRIANGLES_SMOOTH as i32 => TriangleSubdivision::Smooth,
-            v => return Err(out_of_range("triangle rule", v, "0 or 1")),
-        });
+        let table = [
+            (
+                PROFSUBD_TRIANGLES_CATMARK as i32,
+                TriangleSubdivision::Catmark,
+            ),
+            (
+                PROFSUBD_TRIANGLES_SMOOTH as i32,
+                TriangleSubdivision::Smooth,
+            ),
+        ];
+        o.subdiv.triangles = Some(enum_arg("triangle rule", rule, &table)?);
         Ok(())
     })
 }
@@ -286,13 +343,13 @@ mod tests {
             assert!(last_error().contains("not a live profsubd_options"));
             assert_eq!(fake, [0; 4]);
             profsubd_options_free(null_mut());
-            assert!(resolve(f, &crate::ffi::mesh::tests::quad_mesh()).is_err());
+            assert!(resolve(f, &crate::test_support::quad_mesh()).is_err());
         }
     }
 
     #[test]
     fn resolve_applies_caller_then_mesh_then_default() {
-        let mut parts = crate::ffi::mesh::tests::quad_mesh().into_parts();
+        let mut parts = crate::test_support::quad_mesh().into_parts();
         parts.options.boundary = Some(BoundaryInterpolation::EdgeOnly);
         parts.options.crease_method = Some(CreaseMethod::Chaikin);
         let mesh = Mesh::from_parts(parts).unwrap();

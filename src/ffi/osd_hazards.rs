@@ -1,7 +1,7 @@
 //! Where OpenSubdiv 3.5 is not exact or not safe on a mesh ([`crate::mesh::osd_hazards()`]):
 //! the vertices and faces of each hazard kind.
 
-use crate::ffi::error::FfiError;
+use crate::ffi::error::{enum_arg, FfiError};
 use crate::ffi::mesh::profsubd_mesh;
 use crate::ffi::options::{profsubd_options, resolve};
 use crate::ffi::ptr::copy_slice;
@@ -34,20 +34,28 @@ pub enum profsubd_osd_hazard {
 
 fn kind_of(kind: i32) -> Result<HazardKind, FfiError> {
     use profsubd_osd_hazard::*;
-    Ok(match kind {
-        v if v == PROFSUBD_OSD_HAZARD_DART as i32 => HazardKind::Dart,
-        v if v == PROFSUBD_OSD_HAZARD_VALENCE2_DART as i32 => HazardKind::Valence2Dart,
-        v if v == PROFSUBD_OSD_HAZARD_VALENCE2_SHARP as i32 => HazardKind::Valence2Sharp,
-        v if v == PROFSUBD_OSD_HAZARD_VALENCE2 as i32 => HazardKind::Valence2,
-        v if v == PROFSUBD_OSD_HAZARD_CHAIKIN as i32 => HazardKind::Chaikin,
-        v if v == PROFSUBD_OSD_HAZARD_REPEATED_VERTEX as i32 => HazardKind::RepeatedVertex,
-        v if v == PROFSUBD_OSD_HAZARD_PRIMVAR_LIMIT as i32 => HazardKind::PrimvarLimit,
-        v => {
-            return Err(FfiError::invalid_argument(format!(
-                "hazard kind value {v} is out of range; expected 0 to 6"
-            )))
-        }
-    })
+    let table = [
+        (PROFSUBD_OSD_HAZARD_DART as i32, HazardKind::Dart),
+        (
+            PROFSUBD_OSD_HAZARD_VALENCE2_DART as i32,
+            HazardKind::Valence2Dart,
+        ),
+        (
+            PROFSUBD_OSD_HAZARD_VALENCE2_SHARP as i32,
+            HazardKind::Valence2Sharp,
+        ),
+        (PROFSUBD_OSD_HAZARD_VALENCE2 as i32, HazardKind::Valence2),
+        (PROFSUBD_OSD_HAZARD_CHAIKIN as i32, HazardKind::Chaikin),
+        (
+            PROFSUBD_OSD_HAZARD_REPEATED_VERTEX as i32,
+            HazardKind::RepeatedVertex,
+        ),
+        (
+            PROFSUBD_OSD_HAZARD_PRIMVAR_LIMIT as i32,
+            HazardKind::PrimvarLimit,
+        ),
+    ];
+    enum_arg("hazard kind", kind, &table)
 }
 
 /// A copy-out of the vertices (`faces` false) or faces of hazard `kind`.

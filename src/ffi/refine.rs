@@ -1,9 +1,9 @@
 //! Uniform refinement through the C API, and its one setting (the child vertex order).
 
-use crate::ffi::error::FfiError;
+use crate::ffi::error::enum_arg;
 use crate::ffi::handle;
 use crate::ffi::mesh::{mesh_arg, new_mesh_handle, profsubd_mesh};
-use crate::ffi::options::{profsubd_options, resolve};
+use crate::ffi::options::{options_or_default, profsubd_options, resolve};
 use crate::ffi::panic::status_call;
 use crate::ffi::ptr::arg_out;
 use crate::ffi::status::profsubd_status;
@@ -19,13 +19,6 @@ pub enum profsubd_vertex_order {
     PROFSUBD_ORDER_FACES_FIRST = 1,
 }
 
-/// The refinement settings of an options object.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct RefineSettings {
-    /// Order of the child vertices.
-    pub order: VertexOrder,
-}
-
 /// Set the order of the vertices of refined meshes (`PROFSUBD_ORDER_VERTICES_FIRST`, the
 /// default, or `PROFSUBD_ORDER_FACES_FIRST`). Errors: `PROFSUBD_ERROR_NULL_ARGUMENT`,
 /// `PROFSUBD_ERROR_INVALID_HANDLE`, `PROFSUBD_ERROR_INVALID_ARGUMENT` for another value
@@ -38,15 +31,14 @@ pub unsafe extern "C" fn profsubd_options_set_vertex_order(
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
         use profsubd_vertex_order::*;
-        o.refine.order = match order {
-            v if v == PROFSUBD_ORDER_VERTICES_FIRST as i32 => VertexOrder::VerticesFirst,
-            v if v == PROFSUBD_ORDER_FACES_FIRST as i32 => VertexOrder::FacesFirst,
-            v => {
-                return Err(FfiError::invalid_argument(format!(
-                    "vertex order value {v} is out of range; expected 0 or 1"
-                )))
-            }
-        };
+        let table = [
+            (
+                PROFSUBD_ORDER_VERTICES_FIRST as i32,
+                VertexOrder::VerticesFirst,
+            ),
+            (PROFSUBD_ORDER_FACES_FIRST as i32, VertexOrder::FacesFirst),
+        ];
+        o.order = enum_arg("vertex order", order, &table)?;
         Ok(())
     })
 }
@@ -75,11 +67,7 @@ pub unsafe extern "C" fn profsubd_refine_uniform(
         let m = mesh_arg(mesh, "mesh")?;
         let out = arg_out(out, "out")?;
         let opts = resolve(options, m)?;
-        let order = if options.is_null() {
-            VertexOrder::default()
-        } else {
-            handle::borrow(options, "options")?.refine.order
-        };
+        let order = options_or_default(options)?.order;
         let refined = refine_uniform_ordered(m, &opts, level, order)?;
         out.write(new_mesh_handle(refined));
         Ok(())

@@ -1,6 +1,6 @@
 //! The one status enum of the C API, with stable numbers.
 
-use std::ffi::{c_char, CStr};
+use std::ffi::CStr;
 
 use crate::error::Error;
 
@@ -88,20 +88,10 @@ impl From<&Error> for profsubd_status {
     }
 }
 
-/// A fixed description of a status number: "unknown status" for a number that is none.
-/// The string is static: never free it.
-#[no_mangle]
-pub extern "C" fn profsubd_status_string(status: i32) -> *const c_char {
-    crate::ffi::panic::guard(|| {
-        profsubd_status::from_code(status)
-            .map_or(c"unknown status", profsubd_status::description)
-            .as_ptr()
-    })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ffi::message::profsubd_status_string;
     use std::path::PathBuf;
 
     #[test]

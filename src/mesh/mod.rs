@@ -289,23 +289,9 @@ fn check_creases(parts: &MeshParts, face_offsets: &[u32]) -> Result<()> {
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
-
-    /// The unit square as one quad without tags: the fixture unit tests share.
-    pub(crate) fn quad() -> MeshParts {
-        MeshParts {
-            positions: vec![
-                DVec3::new(0.0, 0.0, 0.0),
-                DVec3::new(1.0, 0.0, 0.0),
-                DVec3::new(1.0, 1.0, 0.0),
-                DVec3::new(0.0, 1.0, 0.0),
-            ],
-            face_sizes: vec![4],
-            face_indices: vec![0, 1, 2, 3],
-            ..Default::default()
-        }
-    }
+    use crate::test_support::quad;
 
     #[test]
     fn accepts_a_quad_and_reports_counts() {

@@ -32,7 +32,7 @@ fn cube(creases: Vec<Crease>) -> Mesh {
 }
 
 fn quad() -> Mesh {
-    Mesh::from_parts(crate::mesh::tests::quad()).unwrap()
+    Mesh::from_parts(crate::test_support::quad()).unwrap()
 }
 
 fn close(a: DVec3, b: DVec3) -> bool {

@@ -2,11 +2,11 @@
 //! `#[path = "support/swept.rs"]` in a test crate.
 
 use glam::DVec3;
-use profsubd::construct::sweep::SweptSurface;
 use profsubd::eval::{limit_stencils, Evaluator};
+use profsubd::Fitted;
 
 /// Largest distance between a vertex's exact limit position and its target, over the diagonal.
-pub fn relative_residual(s: &SweptSurface) -> f64 {
+pub fn relative_residual(s: &Fitted) -> f64 {
     let table = limit_stencils(&s.mesh, &s.mesh.options().resolve()).unwrap();
     let limits = table.apply(s.mesh.positions()).unwrap();
     let worst = limits
@@ -18,7 +18,7 @@ pub fn relative_residual(s: &SweptSurface) -> f64 {
 }
 
 /// How many vertices have 1, 2, 3 and 4 crease edges.
-pub fn crease_degrees(s: &SweptSurface) -> Vec<usize> {
+pub fn crease_degrees(s: &Fitted) -> Vec<usize> {
     let mut degree = vec![0usize; s.mesh.num_vertices()];
     for c in s.mesh.creases() {
         for v in c.vertices {
@@ -32,7 +32,7 @@ pub fn crease_degrees(s: &SweptSurface) -> Vec<usize> {
 
 /// The exact limit surface of each of `faces` at the `(n + 1) × (n + 1)` parameters
 /// `(a / n, b / n)`.
-pub fn limit_samples(s: &SweptSurface, faces: &[u32], n: usize) -> Vec<DVec3> {
+pub fn limit_samples(s: &Fitted, faces: &[u32], n: usize) -> Vec<DVec3> {
     let eval = Evaluator::new(&s.mesh, &s.mesh.options().resolve()).unwrap();
     let mut out = Vec::new();
     for &f in faces {

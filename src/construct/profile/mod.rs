@@ -6,36 +6,37 @@
 //!    flat cap, pointed tip, smooth pole);
 //! 2. [`param`]: the common parameter `t` of the four curves (features of equal height on
 //!    one ring, height matching where the curves rise);
-//! 3. [`sweep`]: the axis and quadrant sweeps of the paper give the data points on rings ×
+//! 3. [`hui_lai`]: the axis and quadrant sweeps of the paper give the data points on rings ×
 //!    meridians ([`sampling`]: rings through every breakpoint);
 //! 4. topology: rings joined by quads, smooth poles and flat ends closed by grid caps (all
 //!    extraordinary vertices of valence 3), pointed poles by a tip fan with an infinitely
 //!    sharp corner; crease edges along each corner ring where a curve of that quadrant
 //!    kinks;
-//! 5. [`crate::fit::fit_cage`]: control points whose exact limit surface, under the input's
+//! 5. [`Fitted::fit`]: control points whose exact limit surface, under the settings'
 //!    subdivision options (`boundary`, `crease_method`; also written as the mesh's option
 //!    tags), interpolates the data points.
 
+pub mod hui_lai;
 pub mod input;
 pub mod param;
 pub mod sampling;
 pub mod shapes;
 pub mod silhouettes;
-pub mod sweep;
 
 use std::f64::consts::TAU;
 
 use glam::DVec3;
 
-pub use input::{Caps, ForcedCorners, ProfileInput};
+pub use input::{ForcedCorners, ProfileInput};
 pub use silhouettes::EndKind;
 
-use crate::construct::design::{parts_lattice, Design, DesignCoord, DesignLattice, SurfaceReport};
+use crate::construct::design::{parts_lattice, Design, DesignCoord, DesignLattice};
+use crate::construct::fitted::Fitted;
 use crate::construct::grid::QuadMeshBuilder;
 use crate::construct::pole_cap::{grid_cap_depth, CapVertex};
+use crate::construct::settings::Settings;
 use crate::error::Result;
-use crate::fit::{fit_cage, FitReport, FittedCage};
-use crate::mesh::{Mesh, MeshParts, SHARPNESS_INFINITE};
+use crate::mesh::{MeshParts, SHARPNESS_INFINITE};
 use param::CommonParam;
 use sampling::Rings;
 use silhouettes::Silhouettes;
@@ -56,10 +57,10 @@ pub struct ProfileCage {
     pub design: DesignLattice,
 }
 
-/// Steps 1–4: the cage with data points, not yet fitted (tagged with the input's options).
-pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
-    input.check_settings()?;
-    let sil = Silhouettes::new(input)?;
+/// Steps 1–4: the cage with data points, not yet fitted (tagged with the settings' options).
+pub fn build_cage(input: &ProfileInput, settings: &Settings) -> Result<ProfileCage> {
+    input.check_settings(settings)?;
+    let sil = Silhouettes::new(input, settings)?;
     let param = CommonParam::new(&sil)?;
     let n = input.around as usize;
     if n < 8 && sil.ends.contains(&EndKind::Tip) {
@@ -97,7 +98,7 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
             s,
             theta: meridian(q),
         }));
-        ids.push(b.add_ring((0..n).map(|q| sweep::surface(meridian(q), &c))));
+        ids.push(b.add_ring((0..n).map(|q| hui_lai::surface(meridian(q), &c))));
     }
     for w in ids.windows(2) {
         b.connect_rings(&w[0], &w[1], true);
@@ -118,7 +119,7 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
             EndKind::Open => {}
             EndKind::Flat => {
                 b.flat_cap(ring, flip, place)?;
-                b.crease_ring(ring, 0..n, input.crease_sharpness);
+                b.crease_ring(ring, 0..n, settings.crease_sharpness);
             }
             EndKind::Tip => {
                 let p = place(CapVertex {
@@ -141,11 +142,11 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
         b.crease_ring(
             ring,
             kinked.iter().flat_map(|&q| q * k..(q + 1) * k),
-            input.crease_sharpness,
+            settings.crease_sharpness,
         );
         crease_rings.push(r);
     }
-    let parts = b.finish(input.fit_options().tags());
+    let parts = b.finish(settings.fit_options().tags());
     let design = parts_lattice(&parts, &coords, &design);
     Ok(ProfileCage {
         parts,
@@ -157,7 +158,7 @@ pub fn build_cage(input: &ProfileInput) -> Result<ProfileCage> {
 }
 
 /// The Hui–Lai design surface of a profile model, in [`DesignCoord`]s: the side at ring
-/// parameter `s = t` and angle `θ` is the blended quadrant sweep [`sweep::surface`]; a
+/// parameter `s = t` and angle `θ` is the blended quadrant sweep [`hui_lai::surface`]; a
 /// smooth pole's cap at relative radius `ρ` is the sweep at the parameter `ρ` of the way
 /// (linearly by ring) from the pole to the ring it closes, a tip's fan likewise over its one
 /// ring interval, and a flat cap is the end's section scaled by `ρ` about the axis point.
@@ -171,7 +172,7 @@ struct ProfileDesign<'a> {
 
 impl Design for ProfileDesign<'_> {
     fn side(&self, s: f64, theta: f64) -> DVec3 {
-        sweep::surface(theta, &self.param.points(self.sil, s))
+        hui_lai::surface(theta, &self.param.points(self.sil, s))
     }
 
     fn angle(&self, theta: f64) -> f64 {
@@ -182,8 +183,8 @@ impl Design for ProfileDesign<'_> {
         if self.sil.ends[end] == EndKind::Flat {
             let t_end = self.rings.t[if end == 0 { 0 } else { self.rings.t.len() - 1 }];
             let c = self.param.points(self.sil, t_end);
-            let centre = sweep::axis(&c);
-            return centre + (sweep::surface(theta, &c) - centre) * rho;
+            let centre = hui_lai::axis(&c);
+            return centre + (hui_lai::surface(theta, &c) - centre) * rho;
         }
         let t = self.rings.cap_t(end, rho * self.depth[end] as f64);
         self.side(t, theta)
@@ -199,49 +200,28 @@ pub fn targets(cage: &ProfileCage) -> &[DVec3] {
     &cage.parts.positions
 }
 
-/// A fitted profile model: the control mesh and what it interpolates.
-#[derive(Debug, Clone)]
-pub struct ProfileModel {
-    /// The control mesh (fitted positions, crease and corner tags, option tags).
-    pub mesh: Mesh,
-    /// The data point each control vertex's limit position interpolates, in vertex order.
-    pub targets: Vec<DVec3>,
-    /// The achieved fit residual and its tolerance.
-    pub fit: FitReport,
-    /// Bottom and top end kinds.
-    pub ends: [EndKind; 2],
-    /// Ring index (0 = bottom) of each ring that carries crease edges.
-    pub crease_rings: Vec<usize>,
-    /// The design surface (the blended quadrant sweeps) on every face's lattice.
-    pub design: DesignLattice,
-}
+/// The built-in model, a bottle (`examples/profiles/bottle.json`), in its JSON form.
+pub const DEFAULT_MODEL_JSON: &str = include_str!("../../../examples/profiles/bottle.json");
 
-impl ProfileModel {
-    /// Distance to the design surface between the data points, folds and undulation of the
-    /// fitted limit surface ([`crate::construct::design::surface_report`]), computed on the
-    /// first call. Errors: those of the evaluation.
-    pub fn surface_report(&self) -> Result<&SurfaceReport> {
-        self.design.report(&self.mesh)
-    }
+/// The built-in model ([`DEFAULT_MODEL_JSON`]): its curves and settings.
+pub fn default_model() -> (ProfileInput, Settings) {
+    // The bundled text is parsed by the unit tests; it cannot fail.
+    ProfileInput::from_json(
+        DEFAULT_MODEL_JSON,
+        std::path::Path::new("<built-in bottle>"),
+    )
+    .expect("the built-in model parses")
 }
 
 /// The whole pipeline: silhouettes → data points → cage → control points whose exact limit
 /// surface passes through every data point.
 ///
-/// Errors: [`crate::Error::InvalidArgument`] for bad input (each check says what and where;
-/// also boundary interpolation *none* with an open end, whose data points no limit surface
-/// reaches), [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
-pub fn build(input: &ProfileInput) -> Result<ProfileModel> {
-    let cage = build_cage(input)?;
-    let FittedCage { mesh, targets, fit } = fit_cage(cage.parts, input.fit_options())?;
-    Ok(ProfileModel {
-        mesh,
-        targets,
-        fit,
-        ends: cage.ends,
-        crease_rings: cage.crease_rings,
-        design: cage.design,
-    })
+/// Errors: [`crate::Error::InvalidArgument`] for bad input or settings (each check says what
+/// and where; also boundary interpolation *none* with an open end, whose data points no limit
+/// surface reaches), [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
+pub fn build(input: &ProfileInput, settings: &Settings) -> Result<Fitted> {
+    let cage = build_cage(input, settings)?;
+    Fitted::fit(cage.parts, settings, cage.design)
 }
 
 #[cfg(test)]

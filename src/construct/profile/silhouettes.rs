@@ -10,7 +10,8 @@
 
 use glam::{DVec2, DVec3};
 
-use super::input::{Caps, ProfileInput};
+use super::input::ProfileInput;
+use crate::construct::settings::{Caps, Settings};
 use crate::curves::corners::{detect_corners, one_sided_tangent_within};
 use crate::curves::{EndCondition, Interpolation, PlanarCurve};
 use crate::error::{Error, Result};
@@ -79,7 +80,7 @@ fn mirrored(pts: &[DVec2]) -> Vec<DVec2> {
 
 impl Silhouettes {
     /// Check and build the curves of `input` (settings are assumed checked).
-    pub fn new(input: &ProfileInput) -> Result<Silhouettes> {
+    pub fn new(input: &ProfileInput, settings: &Settings) -> Result<Silhouettes> {
         let c1 = to_points("c1", &input.c1)?;
         let c2 = to_points("c2", &input.c2)?;
         let c3 = match &input.c3 {
@@ -146,7 +147,7 @@ impl Silhouettes {
             }
         };
         let tol = 1e-9 * size;
-        let sharp_angle = input.sharp_angle_deg.to_radians();
+        let sharp_angle = settings.sharp_angle_deg.to_radians();
         let mut ends = [EndKind::Open; 2];
         for (e, end) in ends.iter_mut().enumerate() {
             let at = |i: usize| {
@@ -188,7 +189,7 @@ impl Silhouettes {
                         EndKind::Smooth
                     }
                 }
-                (false, false) => match input.caps {
+                (false, false) => match settings.caps {
                     Caps::Open => EndKind::Open,
                     Caps::Flat => EndKind::Flat,
                 },
@@ -228,14 +229,14 @@ impl Silhouettes {
                 }
                 _ => EndCondition::Natural,
             };
-            let curve = PlanarCurve::new(p, input.interpolation, &sharp, [cond(0), cond(1)])
+            let curve = PlanarCurve::new(p, settings.interpolation, &sharp, [cond(0), cond(1)])
                 .map_err(|e| match e {
                     Error::InvalidArgument(m) => {
                         Error::invalid_argument(format!("{}: {m}", NAMES[i]))
                     }
                     other => other,
                 })?;
-            let breaks = match input.interpolation {
+            let breaks = match settings.interpolation {
                 Interpolation::Spline => sharp.clone(),
                 Interpolation::Polyline => (1..n - 1).collect(),
             };

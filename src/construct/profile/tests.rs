@@ -6,6 +6,7 @@ use glam::DVec3;
 
 use super::shapes::{double_cone, ellipsoid};
 use super::*;
+use crate::construct::settings::{Caps, Settings};
 use crate::error::Error;
 use crate::mesh::Mesh;
 
@@ -75,7 +76,7 @@ fn ellipsoid_data_points_lie_on_the_ellipsoid_with_smooth_caps() {
         let mut input = ellipsoid(a, b, c, 24);
         input.around = around;
         input.along = along;
-        let cage = build_cage(&input).unwrap();
+        let cage = build_cage(&input, &Settings::default()).unwrap();
         assert_eq!(cage.ends, [EndKind::Smooth, EndKind::Smooth]);
         assert!(cage.parts.creases.is_empty() && cage.parts.corners.is_empty());
         check_closed(&cage);
@@ -96,7 +97,7 @@ fn ellipsoid_data_points_lie_on_the_ellipsoid_with_smooth_caps() {
 #[test]
 fn double_cone_has_an_equator_crease_loop_and_corner_tips() {
     let input = double_cone(1.0, 1.0, 4);
-    let cage = build_cage(&input).unwrap();
+    let cage = build_cage(&input, &Settings::default()).unwrap();
     assert_eq!(cage.ends, [EndKind::Tip, EndKind::Tip]);
     check_closed(&cage);
     let p = &cage.parts;
@@ -138,8 +139,11 @@ fn a_kink_in_one_view_gives_a_half_ring_crease_ending_in_darts() {
         .collect();
     // c3 smooth too (the mirror of c2 in x), so only c1 kinks.
     input.c3 = Some(input.c2.iter().map(|p| [-p[0], p[1]]).collect());
-    input.sharp_angle_deg = 60.0;
-    let cage = build_cage(&input).unwrap();
+    let settings = Settings {
+        sharp_angle_deg: 60.0,
+        ..Settings::default()
+    };
+    let cage = build_cage(&input, &settings).unwrap();
     let p = &cage.parts;
     // Quadrants 1 and 4 (next to c1): half of the 16 ring edges.
     assert_eq!(p.creases.len(), 8);
@@ -175,7 +179,7 @@ fn bottle_keeps_its_shoulder_crease_and_flat_bottom() {
     ];
     let mut input = ProfileInput::new(c1.clone(), c1);
     input.along = 16;
-    let cage = build_cage(&input).unwrap();
+    let cage = build_cage(&input, &Settings::default()).unwrap();
     check_closed(&cage);
     assert_eq!(cage.ends, [EndKind::Smooth, EndKind::Smooth]);
     // Corners at points 1, 3, 4, 5 (bottom rim, shoulder, neck, lip): four crease loops.
@@ -199,13 +203,16 @@ fn bottle_keeps_its_shoulder_crease_and_flat_bottom() {
 fn open_and_flat_ends() {
     let c = vec![[1.0, 0.0], [1.2, 1.0], [1.0, 2.0]];
     let input = ProfileInput::new(c.clone(), c.clone());
-    let cage = build_cage(&input).unwrap();
+    let cage = build_cage(&input, &Settings::default()).unwrap();
     assert_eq!(cage.ends, [EndKind::Open, EndKind::Open]);
     let (edges, _) = edge_stats(&cage.parts);
     assert_eq!(edges.values().filter(|&&n| n == 1).count(), 32);
-    let mut input = ProfileInput::new(c.clone(), c);
-    input.caps = Caps::Flat;
-    let cage = build_cage(&input).unwrap();
+    let input = ProfileInput::new(c.clone(), c);
+    let flat = Settings {
+        caps: Caps::Flat,
+        ..Settings::default()
+    };
+    let cage = build_cage(&input, &flat).unwrap();
     assert_eq!(cage.ends, [EndKind::Flat, EndKind::Flat]);
     check_closed(&cage);
     assert_eq!(cage.parts.creases.len(), 32);
@@ -216,7 +223,7 @@ fn open_and_flat_ends() {
 }
 
 fn err(input: &ProfileInput) -> String {
-    match build_cage(input) {
+    match build_cage(input, &Settings::default()) {
         Err(Error::InvalidArgument(m)) => m,
         other => panic!("expected an invalid-argument error, got {other:?}"),
     }

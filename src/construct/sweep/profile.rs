@@ -135,7 +135,7 @@ impl SweptProfile {
 }
 
 /// Error if two non-adjacent segments of the input polygon intersect (or touch).
-pub(super) fn check_no_crossing(what: &str, points: &[[f64; 2]], closed: bool) -> Result<()> {
+pub(crate) fn check_no_crossing(what: &str, points: &[[f64; 2]], closed: bool) -> Result<()> {
     let p: Vec<DVec2> = points.iter().map(|&q| DVec2::from(q)).collect();
     let n = p.len();
     let segs = if closed { n } else { n - 1 };

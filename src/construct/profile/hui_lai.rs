@@ -1,5 +1,14 @@
-//! The axis and the four quadrant sweeps of Hui & Lai (2007), equations (1)–(4.3), with
-//! quadrants 3 and 4 written out as in `hui-lai-2007-sweep-equations.md`.
+//! The axis and the four quadrant sweeps of K. C. Hui and Y. H. Lai, "Generating subdivision
+//! surfaces from profile curves", Computer-Aided Design 39 (2007), equations (1)–(4.3).
+//!
+//! At parameter `t` the four silhouettes give `c₁ = (x₁, z₁)`, `c₂ = (y₂, z₂)`,
+//! `c₃ = (x₃, z₃)`, `c₄ = (y₄, z₄)`. The axis point is
+//! `a = ((x₁ + x₃)/2, (y₂ + y₄)/2, (z₁ + z₂ + z₃ + z₄)/4)`, and with `q = 2θ/π` quadrant
+//! `i` (`θ ∈ [(i−1)π/2, iπ/2)`) sweeps `cᵢ` into `cᵢ₊₁` about it:
+//! - `x = ±(x₁ or x₃ − aₓ) cos θ + aₓ` (`x₁` in quadrants 1 and 4, `−(x₃ − aₓ)` in 2 and 3),
+//! - `y = ±(y₂ or y₄ − a_y) sin θ + a_y` (`y₂` in quadrants 1 and 2, `−(y₄ − a_y)` in 3
+//!   and 4),
+//! - `z = zᵢ + (q − (i − 1)) (zᵢ₊₁ − zᵢ)` (heights blended linearly across the quadrant).
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

@@ -57,11 +57,11 @@ use std::f64::consts::{PI, TAU};
 
 use glam::{DVec2, DVec3};
 
-use super::mesh::grid_mesh_coords;
-use super::revolve::{cap_point, revolve_point, RevolveInput, RevolvedProfile};
-use super::sweep::{GridEnd, SweepGrid};
+use super::input::RevolveInput;
+use super::profile::{cap_point, revolve_point, RevolvedProfile};
 use crate::construct::design::DesignCoord;
-use crate::construct::profile::Caps;
+use crate::construct::grid_mesh::{grid_mesh_coords, GridEnd, SweepGrid};
+use crate::construct::settings::{Caps, Settings};
 use crate::error::{Error, Result};
 use crate::mesh::{Corner, Crease, MeshParts, SHARPNESS_INFINITE};
 
@@ -654,11 +654,12 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 /// a folding meridian cap.
 pub fn wedge_parts(
     input: &RevolveInput,
+    settings: &Settings,
     profile: &RevolvedProfile,
     grid: &SweepGrid,
     ring_s: &[f64],
 ) -> Result<(MeshParts, Vec<DesignCoord>)> {
-    let capped = input.caps == Caps::Flat;
+    let capped = settings.caps == Caps::Flat;
     let rows = grid.rings.len();
     if capped && rows < 2 {
         return Err(Error::invalid_argument(format!(

@@ -4,10 +4,9 @@
 //! and revolutions get the same pole caps and crease tagging as the profile construction.
 //! Each vertex's data point is its initial position (the fitter's input).
 
-use glam::DVec3;
-
-use super::sweep::{GridEnd, SweepGrid};
 use std::f64::consts::TAU;
+
+use glam::DVec3;
 
 use crate::construct::design::DesignCoord;
 use crate::construct::grid::QuadMeshBuilder;
@@ -15,6 +14,40 @@ use crate::construct::pole_cap::CapVertex;
 use crate::error::{Error, Result};
 use crate::mesh::{MeshParts, SHARPNESS_INFINITE};
 use crate::options::PartialOptions;
+
+/// How the first or last ring of a grid is finished.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GridEnd {
+    /// Left open: boundary edges.
+    Open,
+    /// Closed at one tip vertex at this point, tagged as an infinitely sharp corner.
+    Tip(DVec3),
+    /// Closed by a grid cap through a smooth pole.
+    Smooth,
+    /// Closed by a flat grid cap, creased where it meets the side.
+    Flat,
+}
+
+/// The data points of a sweep on a grid, with what the mesh needs to know about it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SweepGrid {
+    /// One ring per trajectory sample, each with one data point per profile sample.
+    pub rings: Vec<Vec<DVec3>>,
+    /// Whether each ring is closed (closed profile).
+    pub ring_closed: bool,
+    /// Whether the last ring joins the first (closed trajectory).
+    pub rings_closed: bool,
+    /// Rings at trajectory corners: crease rings across the sweep.
+    pub crease_rings: Vec<usize>,
+    /// Profile samples at profile corners: crease columns along the sweep.
+    pub crease_columns: Vec<usize>,
+    /// Whether faces must be reversed to face outward (a clockwise closed profile).
+    pub flip: bool,
+    /// How the first and the last ring are finished.
+    pub ends: [GridEnd; 2],
+    /// Sharpness of the crease rings and columns.
+    pub crease_sharpness: f32,
+}
 
 /// Quad mesh parts of `grid`; crease edges get `grid.crease_sharpness`, tips are infinitely
 /// sharp corners, flat caps are creased infinitely sharp. `cap_point(end, v)` gives the data
@@ -112,15 +145,16 @@ pub fn grid_mesh_coords(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::construct::sweep::revolve::RevolveInput;
-    use crate::construct::sweep::sweep::tests::circle2;
-    use crate::construct::sweep::sweep::SweepInput;
+    use crate::construct::revolve::RevolveInput;
+    use crate::construct::settings::Settings;
+    use crate::construct::sweep::SweepInput;
     use crate::mesh::validate::check;
     use crate::mesh::Mesh;
+    use crate::test_support::circle2;
     use std::f64::consts::TAU;
 
     fn revolve_mesh(input: &RevolveInput) -> Mesh {
-        Mesh::from_parts(input.mesh_parts().unwrap()).unwrap()
+        Mesh::from_parts(input.mesh_parts(&Settings::default()).unwrap()).unwrap()
     }
 
     #[test]
@@ -134,8 +168,13 @@ mod tests {
         );
         input.closed_profile = true;
         input.closed_trajectory = true;
-        let m = Mesh::from_parts(grid_mesh(&input.grid().unwrap(), &|_, _| DVec3::ZERO).unwrap())
-            .unwrap();
+        let m = Mesh::from_parts(
+            grid_mesh(&input.grid(&Settings::default()).unwrap(), &|_, _| {
+                DVec3::ZERO
+            })
+            .unwrap(),
+        )
+        .unwrap();
         let r = check(&m);
         assert_eq!((r.num_vertices, r.num_faces, r.num_edges), (512, 512, 1024));
         assert_eq!(r.euler_characteristic, 0);
@@ -216,8 +255,13 @@ mod tests {
         input.closed_profile = true;
         input.closed_trajectory = true;
         input.samples_profile = 8;
-        let m = Mesh::from_parts(grid_mesh(&input.grid().unwrap(), &|_, _| DVec3::ZERO).unwrap())
-            .unwrap();
+        let m = Mesh::from_parts(
+            grid_mesh(&input.grid(&Settings::default()).unwrap(), &|_, _| {
+                DVec3::ZERO
+            })
+            .unwrap(),
+        )
+        .unwrap();
         // 4 columns × 32 edges, forming 4 closed loops: each crease vertex has 2 crease edges.
         assert_eq!(m.creases().len(), 4 * 32);
         let mut count = std::collections::HashMap::new();
@@ -234,7 +278,7 @@ mod tests {
         l.closed_profile = true;
         l.samples_profile = 8;
         l.samples_trajectory = 8;
-        let g = l.grid().unwrap();
+        let g = l.grid(&Settings::default()).unwrap();
         let m = Mesh::from_parts(grid_mesh(&g, &|_, _| DVec3::ZERO).unwrap()).unwrap();
         // 4 profile-corner columns × 8 + one ring of 8 at the corner.
         assert_eq!(m.creases().len(), 4 * 8 + 8);

@@ -1,0 +1,52 @@
+//! The result of every construction: the fitted control mesh, the data points it
+//! interpolates, how well it met them, and its surface report against the design surface.
+
+use std::sync::Arc;
+
+use glam::DVec3;
+
+use crate::construct::design::{DesignLattice, SurfaceReport};
+use crate::construct::settings::Settings;
+use crate::error::Result;
+use crate::fit::{fit_cage, FitReport, FittedCage};
+use crate::mesh::{Mesh, MeshParts};
+
+/// A fitted construction: a control mesh whose vertices' exact limit positions are the data
+/// points.
+#[derive(Debug, Clone)]
+pub struct Fitted {
+    /// The control mesh: quads, crease and corner tags, the fit's subdivision options as
+    /// option tags. Shared (`Arc`) with the handles that hand it out.
+    pub mesh: Arc<Mesh>,
+    /// The data point of each vertex, in vertex order: its limit position.
+    pub targets: Vec<DVec3>,
+    /// The achieved fit residual and its tolerance.
+    pub fit: FitReport,
+    /// The design surface on every face's lattice ([`crate::construct::design`]).
+    pub design: DesignLattice,
+}
+
+impl Fitted {
+    /// Fit `parts` (each vertex at its data point) under the settings' subdivision options
+    /// ([`fit_cage`], which also writes them as the mesh's option tags): the exact limit
+    /// surface then passes through every data point, to [`crate::fit::RELATIVE_TOLERANCE`] ×
+    /// their diagonal. `design` is the design surface on the faces' lattice.
+    ///
+    /// Errors: those of [`fit_cage`].
+    pub fn fit(parts: MeshParts, settings: &Settings, design: DesignLattice) -> Result<Fitted> {
+        let FittedCage { mesh, targets, fit } = fit_cage(parts, settings.fit_options())?;
+        Ok(Fitted {
+            mesh: Arc::new(mesh),
+            targets,
+            fit,
+            design,
+        })
+    }
+
+    /// Distance to the design surface between the data points, folds and undulation of the
+    /// fitted limit surface ([`crate::construct::design::surface_report`]), computed on the
+    /// first call. Errors: those of the evaluation.
+    pub fn surface_report(&self) -> Result<&SurfaceReport> {
+        self.design.report(&self.mesh)
+    }
+}

@@ -1,0 +1,38 @@
+//! Fixtures shared by the unit tests (compiled for tests only): the one place a test module
+//! takes a fixture from another module's tests.
+
+use std::f64::consts::TAU;
+
+use glam::DVec3;
+
+use crate::mesh::{Mesh, MeshParts};
+
+/// The unit square as one quad without tags.
+pub(crate) fn quad() -> MeshParts {
+    MeshParts {
+        positions: vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+        ],
+        face_sizes: vec![4],
+        face_indices: vec![0, 1, 2, 3],
+        ..Default::default()
+    }
+}
+
+/// The unit square as a one-quad mesh.
+pub(crate) fn quad_mesh() -> Mesh {
+    Mesh::from_parts(quad()).unwrap()
+}
+
+/// `n` points on the circle of radius `r` about the origin, counter-clockwise.
+pub(crate) fn circle2(n: usize, r: f64) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|i| {
+            let t = TAU * i as f64 / n as f64;
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}

@@ -94,7 +94,8 @@
 //! - [`eval`]: exact limit positions, derivatives and stencils;
 //! - [`curves`]: curve input (splines broken at corners, polylines);
 //! - [`construct`]: the constructions, their shared settings and result;
-//! - [`fit`]: interpolating fit of control points to data points;
+//! - `fit` (internal): interpolating fit of control points to data points ([`FitReport`],
+//!   [`FitOptions`] re-exported);
 //! - [`io`]: OBJ with OpenSubdiv tag lines;
 //! - [`ffi`]: the C ABI (`include/profsubd.h`).
 
@@ -108,7 +109,7 @@ pub mod curves;
 pub mod error;
 pub mod eval;
 pub mod ffi;
-pub mod fit;
+pub(crate) mod fit;
 pub mod io;
 pub mod mesh;
 pub mod options;
@@ -123,6 +124,7 @@ pub use construct::sweep::SweepInput;
 pub use construct::{profile, revolve, sweep, Caps, Fitted, Settings};
 pub use error::{Error, Result};
 pub use eval::{limit_stencils, Evaluator};
+pub use fit::{FitOptions, FitReport};
 pub use glam::DVec3;
 pub use mesh::{Corner, Crease, Mesh, MeshParts};
 pub use options::{

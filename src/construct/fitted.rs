@@ -27,12 +27,14 @@ pub struct Fitted {
 }
 
 impl Fitted {
-    /// Fit `parts` (each vertex at its data point) under the settings' subdivision options
-    /// ([`fit_cage`], which also writes them as the mesh's option tags): the exact limit
-    /// surface then passes through every data point, to [`crate::fit::RELATIVE_TOLERANCE`] ×
-    /// their diagonal. `design` is the design surface on the faces' lattice.
+    /// Fit `parts` (each vertex at its data point) under the settings' subdivision options,
+    /// which the mesh also gets as option tags: the exact limit surface then passes through
+    /// every data point, to 1e-10 × their diagonal. `design` is the design surface on the
+    /// faces' lattice.
     ///
-    /// Errors: those of [`fit_cage`].
+    /// Errors: [`crate::Error::InvalidArgument`] for a cage that is not a valid mesh or whose
+    /// data points no limit surface reaches (boundary interpolation *none* at an open
+    /// boundary); [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
     pub fn fit(parts: MeshParts, settings: &Settings, design: DesignLattice) -> Result<Fitted> {
         let FittedCage { mesh, targets, fit } = fit_cage(parts, settings.fit_options())?;
         Ok(Fitted {

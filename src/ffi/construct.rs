@@ -329,5 +329,4 @@ pub unsafe extern "C" fn profsubd_options_set_sweep_corners(
 }
 
 #[cfg(test)]
-#[path = "construct_tests.rs"]
 mod tests;

@@ -155,5 +155,4 @@ pub unsafe extern "C" fn profsubd_fold_report_get_folded_faces(
 }
 
 #[cfg(test)]
-#[path = "folds_tests.rs"]
 mod tests;

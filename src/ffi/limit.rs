@@ -197,5 +197,4 @@ pub unsafe extern "C" fn profsubd_stencil_table_apply(
 }
 
 #[cfg(test)]
-#[path = "limit_tests.rs"]
 mod tests;

@@ -194,5 +194,4 @@ impl profsubd_profile_curves {
 }
 
 #[cfg(test)]
-#[path = "profile_tests.rs"]
 mod tests;

@@ -232,13 +232,15 @@ fn capped_sphere_wedge_closes_with_two_flat_meridian_caps() {
     assert_eq!(r.euler_characteristic, 2);
     assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
     assert!(largest_valence(&s) <= 5);
-    // Creases: two columns continued by the pole sectors' radial lines to the apexes, and
-    // the axis (`R − 1 − 2a` intervals); only the apexes have three.
+    // Creases: two columns continued by the pole sectors' radial lines to the apexes, the
+    // axis (`R − 1 − 2a` intervals), and the 270° sectors' bisectors with the side's middle
+    // column between them (no span of 180° or more at an apex); only the apexes have more
+    // than two, four each.
     assert_eq!(
         s.mesh.creases().len(),
-        2 * (rings - 1 + 2 * k) + (rings - 1 - 2 * a)
+        3 * (rings - 1 + 2 * k) + (rings - 1 - 2 * a)
     );
-    assert_eq!(crease_degrees(&s)[2], 2);
+    assert_eq!(crease_degrees(&s)[2..], [0, 2]);
     assert_eq!(s.mesh.corners().len(), 2);
     assert!(relative_residual(&s) <= 1e-10);
     assert!(volume(&s) > 0.0);

@@ -3,12 +3,14 @@
 //! fold check, `eval::folds`), stay close to their design surfaces between the data points
 //! and are about as fair as them (`construct::design`).
 
+#[path = "support/arc.rs"]
+mod arc;
 #[path = "support/random_profile.rs"]
 mod random_profile;
 
-use std::f64::consts::PI;
 use std::path::PathBuf;
 
+use arc::semicircle;
 use profsubd::cli::profile::read_input;
 use profsubd::construct::design::SurfaceReport;
 use profsubd::construct::profile::{build, shapes::ellipsoid, ProfileInput};
@@ -24,7 +26,8 @@ fn example(dir: &str, name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("examples/{dir}/{name}.json"))
 }
 
-fn assert_valid(name: &str, r: &SurfaceReport, max_distance: f64) {
+/// Print `r`; assert no folds and a largest design distance below `max_distance`.
+fn assert_unfolded(name: &str, r: &SurfaceReport, max_distance: f64) {
     println!(
         "{name}: folded {} (worst reversal {:.1}°), design distance max {:.2e} mean {:.2e}, \
          undulation {:.3}",
@@ -37,6 +40,11 @@ fn assert_valid(name: &str, r: &SurfaceReport, max_distance: f64) {
     assert_eq!(r.folded_faces, 0, "{name}: {r:?}");
     assert!(r.worst_reversal_deg < 90.0, "{name}: {r:?}");
     assert!(r.max_design_distance < max_distance, "{name}: {r:?}");
+}
+
+/// [`assert_unfolded`], and a mean design distance below a tenth of `max_distance`.
+fn assert_valid(name: &str, r: &SurfaceReport, max_distance: f64) {
+    assert_unfolded(name, r, max_distance);
     assert!(r.mean_design_distance < 0.1 * max_distance, "{name}: {r:?}");
 }
 
@@ -93,12 +101,6 @@ fn ellipsoids_of_several_aspect_ratios_do_not_fold() {
 
 #[test]
 fn spheres_and_goblets_by_revolution_do_not_fold() {
-    let semicircle: Vec<[f64; 2]> = (0..=48)
-        .map(|i| {
-            let t = -PI / 2.0 + PI * i as f64 / 48.0;
-            [if i == 0 || i == 48 { 0.0 } else { t.cos() }, t.sin()]
-        })
-        .collect();
     // A goblet with a wide flat foot (a smooth pole at its centre), a thin stem and a bowl.
     let goblet = vec![
         [0.0, 0.0],
@@ -113,7 +115,7 @@ fn spheres_and_goblets_by_revolution_do_not_fold() {
         [2.1, 6.0],
         [0.0, 5.9],
     ];
-    for (name, profile) in [("sphere", semicircle), ("goblet", goblet)] {
+    for (name, profile) in [("sphere", semicircle(48)), ("goblet", goblet)] {
         for (around, along) in SAMPLINGS {
             let mut input = RevolveInput::new(profile.clone());
             input.samples_around = around;
@@ -225,18 +227,7 @@ fn assert_capped_wedges(
             let label = format!("{name} {angle}° {around}x{along}");
             let s = revolve(&input).unwrap();
             let r = s.surface_report().unwrap();
-            println!(
-                "{label}: folded {} (worst reversal {:.1}°), design distance max {:.2e} mean \
-                 {:.2e}, undulation {:.3}",
-                r.folded_faces,
-                r.worst_reversal_deg,
-                r.max_design_distance,
-                r.mean_design_distance,
-                r.undulation
-            );
-            assert_eq!(r.folded_faces, 0, "{label}: {r:?}");
-            assert!(r.worst_reversal_deg < 90.0, "{label}: {r:?}");
-            assert!(r.max_design_distance < max_distance, "{label}: {r:?}");
+            assert_unfolded(&label, r, max_distance);
             assert!(
                 (0.8..max_undulation).contains(&r.undulation),
                 "{label}: {r:?}"
@@ -254,15 +245,6 @@ fn assert_capped_wedges(
         assert!(previous < 0.5 * first.unwrap_or(0.0), "{name} {angle}°");
     }
     at_32x16
-}
-
-fn semicircle(n: usize) -> Vec<[f64; 2]> {
-    (0..=n)
-        .map(|i| {
-            let t = -PI / 2.0 + PI * i as f64 / n as f64;
-            [if i == 0 || i == n { 0.0 } else { t.cos() }, t.sin()]
-        })
-        .collect()
 }
 
 #[test]

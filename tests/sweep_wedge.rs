@@ -3,13 +3,14 @@
 //! characteristic, orientation, tags, the interpolation residual of the exact limit at every
 //! control vertex, and that the limit surface of every flat cap lies in its plane.
 
+#[path = "support/arc.rs"]
+mod arc;
 #[path = "support/random_profile.rs"]
 mod random_profile;
 #[path = "support/swept.rs"]
 mod swept;
 
-use std::f64::consts::PI;
-
+use arc::semicircle;
 use glam::DVec3;
 use profsubd::construct::profile::Caps;
 use profsubd::construct::sweep::revolve;
@@ -20,15 +21,6 @@ use profsubd::mesh::SHARPNESS_INFINITE;
 use profsubd::Error;
 use random_profile::RandomProfiles;
 use swept::{crease_degrees, limit_samples, relative_residual};
-
-fn semicircle(n: usize) -> Vec<[f64; 2]> {
-    (0..=n)
-        .map(|i| {
-            let t = -PI / 2.0 + PI * i as f64 / n as f64;
-            [if i == 0 || i == n { 0.0 } else { t.cos() }, t.sin()]
-        })
-        .collect()
-}
 
 fn vase() -> Vec<[f64; 2]> {
     vec![[1.0, 0.0], [1.4, 0.8], [1.3, 2.0], [0.9, 3.0], [0.9, 3.6]]

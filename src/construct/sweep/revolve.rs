@@ -419,9 +419,11 @@ impl RevolveInput {
             .filter(|&i| i == 0 || i + 1 == samples.len() || samples[i].corner)
             .collect();
         let runs: Vec<usize> = breaks.windows(2).map(|w| w[1] - w[0]).collect();
+        // A partial turn closes a tip with a sector too, whose cells need the same room.
+        let sector = |e: GridEnd| !self.full_turn() && matches!(e, GridEnd::Tip(_));
         let caps = cap_depths(
-            ends.map(|e| e == GridEnd::Smooth),
-            ends.map(|e| matches!(e, GridEnd::Tip(_))),
+            ends.map(|e| e == GridEnd::Smooth || sector(e)),
+            ends.map(|e| matches!(e, GridEnd::Tip(_)) && !sector(e)),
             &runs,
             if self.full_turn() {
                 grid_cap_depth(na)
@@ -430,7 +432,7 @@ impl RevolveInput {
             },
         );
         for e in 0..2 {
-            if ends[e] == GridEnd::Smooth {
+            if ends[e] == GridEnd::Smooth || sector(ends[e]) {
                 depth[e] = caps[e];
             }
         }

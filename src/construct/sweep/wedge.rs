@@ -13,7 +13,7 @@
 //! half spans at most 180° no quad has a reflex angle. Each patch is a quarter of a full
 //! turn's grid cap ([`crate::construct::pole_cap`]): its vertices lie, as a relative radius ρ
 //! and an angle θ, on the L-shaped lines `max(x, y) = ρ k` mapped to circles, uniformly in
-//! angle ([`square_polar`]), so the radial steps are `1/k` of the radius everywhere, also at
+//! angle (`square_polar`), so the radial steps are `1/k` of the radius everywhere, also at
 //! the quarter points (a Coons patch squeezed them to nothing there, next to the ring's long
 //! cells, and the interpolating fit folded). A flat cap scales ρ by the ring's radius in the
 //! ring's plane, a pole maps `(ρ, θ)` onto the surface through [`cap_point`] (the same
@@ -24,7 +24,7 @@
 //! Catmull-Clark's corner rule maps the faces between a corner's two creases into the convex
 //! cone of their tangents, so a span of 180° or more between two creases folds at the apex,
 //! and one close to it leaves the limit normal there ill-conditioned: a sector wider than
-//! [`SPAN_LIMIT`] (150°) creases its bisector, which splits the apex's span into two halves
+//! `SPAN_LIMIT` (150°) creases its bisector, which splits the apex's span into two halves
 //! below 150°. The crease runs on to a crease or a boundary (OpenSubdiv's limit is inexact
 //! at darts, where a crease ends): a flat sector's to its crease ring, a pole's along the
 //! side's middle meridian to the other end (its sector's bisector, a crease ring or the open

@@ -7,6 +7,7 @@
 #[allow(dead_code)] // the shape index is not needed here
 mod osd_shapes;
 
+#[allow(dead_code)]
 #[path = "support/arc.rs"]
 mod arc;
 

@@ -8,6 +8,7 @@
 //! The input curves are sampled densely (64+ points) so that their spline interpolation
 //! error stays far below the surface error being measured.
 
+#[allow(dead_code)]
 #[path = "support/arc.rs"]
 mod arc;
 

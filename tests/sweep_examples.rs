@@ -90,16 +90,19 @@ fn examples_regenerate_with_their_topology() {
                 assert!(r.valences.keys().all(|v| (3..=5).contains(v)), "{name}");
                 let degrees = crease_degrees(&s);
                 assert_eq!(degrees[0], 0, "{name}");
-                // Four creases: glass 2 × 3 reflex corners (foot top, stem foot, bowl foot)
-                // and the 3 axis vertices their rows reach; vase 2 apexes (with the
-                // bisector), 2 × 1 reflex corner (the neck) and 1 axis vertex.
-                let four = if name == "vase_cutaway" { 5 } else { 9 };
+                // Four creases: glass 2 × 3 reflex corners (foot top, stem foot, bowl foot),
+                // the 3 axis vertices their rows reach, the 2 apexes (with the bisector,
+                // creased from pole to pole along the middle meridian) and the 6 crease
+                // rings' vertices on that meridian; vase 2 apexes (with the bisector),
+                // 2 × 1 reflex corner (the neck) and 1 axis vertex.
+                let four = if name == "vase_cutaway" { 5 } else { 17 };
                 assert_eq!(degrees[3], four, "{name}");
                 assert_eq!(s.mesh.corners().len(), degrees[2] + four, "{name}");
-                // Glass: 6 crease rings (foot edge, foot top, stem ×2, bowl, rim), 2 poles, 3
-                // axis vertices; vase: 2 flat ends (apex, 2 arc ends and the bisector's end
-                // each), 3 crease rings, 1 axis vertex.
-                let expect = if name == "vase_cutaway" { 15 } else { 17 };
+                // Glass: 6 crease rings (foot edge, foot top, stem ×2, bowl, rim) at both
+                // meridians and the middle one, 2 poles, 3 axis vertices; vase: 2 flat ends
+                // (apex, 2 arc ends and the bisector's end each), 3 crease rings, 1 axis
+                // vertex.
+                let expect = if name == "vase_cutaway" { 15 } else { 23 };
                 assert_eq!(s.mesh.corners().len(), expect, "{name}");
             }
             _ => unreachable!(),

@@ -3,13 +3,14 @@
 //! characteristic, orientation, tags, the interpolation residual of the exact limit at every
 //! control vertex, and that the limit surface of every flat cap lies in its plane.
 
+#[path = "support/arc.rs"]
+mod arc;
 #[path = "support/random_profile.rs"]
 mod random_profile;
 #[path = "support/swept.rs"]
 mod swept;
 
-use std::f64::consts::PI;
-
+use arc::semicircle;
 use glam::DVec3;
 use profsubd::mesh::validate::check;
 use profsubd::mesh::SHARPNESS_INFINITE;
@@ -20,15 +21,6 @@ use profsubd::RevolveInput;
 use profsubd::{revolve, Settings};
 use random_profile::RandomProfiles;
 use swept::{crease_degrees, limit_samples, relative_residual};
-
-fn semicircle(n: usize) -> Vec<[f64; 2]> {
-    (0..=n)
-        .map(|i| {
-            let t = -PI / 2.0 + PI * i as f64 / n as f64;
-            [if i == 0 || i == n { 0.0 } else { t.cos() }, t.sin()]
-        })
-        .collect()
-}
 
 fn vase() -> Vec<[f64; 2]> {
     vec![[1.0, 0.0], [1.4, 0.8], [1.3, 2.0], [0.9, 3.0], [0.9, 3.6]]
@@ -246,13 +238,15 @@ fn capped_sphere_wedge_closes_with_two_flat_meridian_caps() {
     assert_eq!(r.euler_characteristic, 2);
     assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
     assert!(largest_valence(&s) <= 5);
-    // Creases: two columns continued by the pole sectors' radial lines to the apexes, and
-    // the axis (`R − 1 − 2a` intervals); only the apexes have three.
+    // Creases: two columns continued by the pole sectors' radial lines to the apexes, the
+    // axis (`R − 1 − 2a` intervals), and the 270° sectors' bisectors with the side's middle
+    // column between them (no span of 180° or more at an apex); only the apexes have more
+    // than two, four each.
     assert_eq!(
         s.mesh.creases().len(),
-        2 * (rings - 1 + 2 * k) + (rings - 1 - 2 * a)
+        3 * (rings - 1 + 2 * k) + (rings - 1 - 2 * a)
     );
-    assert_eq!(crease_degrees(&s)[2], 2);
+    assert_eq!(crease_degrees(&s)[2..], [0, 2]);
     assert_eq!(s.mesh.corners().len(), 2);
     assert!(relative_residual(&s) <= 1e-10);
     assert!(volume(&s) > 0.0);

@@ -22,7 +22,9 @@
 //! ([`crate::eval::folds::find_folds`]) and an undulation ratio: the bending energy
 //! `∫ (κ₁² + κ₂²) dA` of the limit surface over the design surface's, both measured on the
 //! lattices (1 = as fair as the design; wiggles the design does not have raise it; normals
-//! from lattice differences on both, so the discretization is the same).
+//! from lattice differences on both, so the discretization is the same; cells at a point
+//! where the lattice's two derivatives are nearly parallel, such as a flat cap's corner on a
+//! straight crease, where the limit's Jacobian vanishes, are left out of both).
 
 use std::f64::consts::TAU;
 use std::sync::OnceLock;
@@ -218,9 +220,13 @@ pub fn design_lattice(
     }
 }
 
+/// Smallest sine between a lattice point's two difference derivatives for which it gets a
+/// normal ([`lattice_normals`]).
+const DEGENERATE_SINE: f64 = 0.05;
+
 /// Unit normals of one face's `(LATTICE + 1)²` lattice points from second-order lattice
-/// differences (central inside, one-sided three-point on the face's edges; zero where they
-/// vanish).
+/// differences (central inside, one-sided three-point on the face's edges; zero where the
+/// two derivatives are within [`DEGENERATE_SINE`] of parallel).
 fn lattice_normals(p: &[DVec3]) -> Vec<DVec3> {
     let n = LATTICE + 1;
     // Derivative along a line of lattice points `line(0..=LATTICE)` at index `k`.
@@ -234,7 +240,15 @@ fn lattice_normals(p: &[DVec3]) -> Vec<DVec3> {
             let (i, j) = (k % n, k / n);
             let du = derivative(&|a| p[j * n + a], i);
             let dv = derivative(&|b| p[b * n + i], j);
-            du.cross(dv).normalize_or_zero()
+            let normal = du.cross(dv);
+            // Where the parameterization degenerates (a flat cap's corner on a straight
+            // crease, whose limit Jacobian vanishes there), the difference normal is
+            // noise: none, and its cells are left out of the bending energy.
+            if normal.length() < DEGENERATE_SINE * du.length() * dv.length() {
+                DVec3::ZERO
+            } else {
+                normal.normalize()
+            }
         })
         .collect()
 }
@@ -251,6 +265,9 @@ fn bending_energy(p: &[DVec3], normal: &[DVec3]) -> f64 {
         for i in 0..LATTICE {
             let k = j * n + i;
             let (a, b) = (p[k + 1] - p[k], p[k + n] - p[k]);
+            if [k, k + 1, k + n].iter().any(|&c| normal[c] == DVec3::ZERO) {
+                continue;
+            }
             let (na, nb) = (normal[k + 1] - normal[k], normal[k + n] - normal[k]);
             let (g11, g12, g22) = (a.dot(a), a.dot(b), b.dot(b));
             let det = g11 * g22 - g12 * g12;

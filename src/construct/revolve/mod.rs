@@ -176,18 +176,20 @@ impl RevolveInput {
         place_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth), |s| {
             profile.point(s)
         });
-        // Samples each end's cap or tip replaces: one (the pole) for a tip; a smooth pole
-        // several, so that its cap's cells are about as large as the faces around it: a full
-        // turn's grid cap `grid_cap_depth` (its `k / 2` squares), a partial turn's sector `k`
-        // (its radial lines have `k` intervals), either bounded by `cap_depths`.
+        // Samples each end's cap or tip replaces: one (the pole) for a full turn's tip; a
+        // smooth pole (and a partial turn's tip, also closed by a sector) several, so that
+        // its cap's cells are about as large as the faces around it: a full turn's grid cap
+        // `grid_cap_depth` (its `k / 2` squares), a partial turn's sector `k` (its radial
+        // lines have `k` intervals), either bounded by `cap_depths`.
         let mut depth = ends.map(|e| usize::from(e != GridEnd::Open));
         let breaks: Vec<usize> = (0..samples.len())
             .filter(|&i| i == 0 || i + 1 == samples.len() || samples[i].corner)
             .collect();
         let runs: Vec<usize> = breaks.windows(2).map(|w| w[1] - w[0]).collect();
+        let sector = |e: GridEnd| !self.full_turn() && matches!(e, GridEnd::Tip(_));
         let caps = cap_depths(
-            ends.map(|e| e == GridEnd::Smooth),
-            ends.map(|e| matches!(e, GridEnd::Tip(_))),
+            ends.map(|e| e == GridEnd::Smooth || sector(e)),
+            ends.map(|e| matches!(e, GridEnd::Tip(_)) && !sector(e)),
             &runs,
             if self.full_turn() {
                 grid_cap_depth(na)
@@ -196,7 +198,7 @@ impl RevolveInput {
             },
         );
         for e in 0..2 {
-            if ends[e] == GridEnd::Smooth {
+            if ends[e] == GridEnd::Smooth || sector(ends[e]) {
                 depth[e] = caps[e];
             }
         }

@@ -8,21 +8,28 @@
 //! neighbourhood on the surface, or a flat cap's circular sector — is closed by two `k × k`
 //! grid patches meeting along the sector's bisector. The first has its corners at the apex
 //! (on the axis), the ring's first vertex, its quarter point and its middle; the second
-//! mirrors it. So the apex has valence 3 (4 with meridian caps), the quarter points
-//! valence 3, the other vertices 4: no vertex of valence ≈ `n`, and as each half spans at
-//! most 180° no quad has a reflex angle. Interior vertices come from transfinite (Coons)
-//! interpolation in the unit sector, as a relative radius ρ and an angle θ; a flat cap
-//! scales ρ by the ring's radius in the ring's plane, a pole maps `(ρ, θ)` onto the surface
-//! through [`cap_point`] (the same placement as a full turn's pole cap), and replaces up to
-//! `k` profile intervals (its radial lines have `k` intervals; see `RevolveInput::grid`), so
-//! that its cells are about as large as the side's faces. A pole's apex is an
-//! infinitely sharp corner: the two boundary meridians meet there at the wedge angle, and
-//! with caps three creases meet there. Catmull-Clark's corner rule maps the faces between a
-//! corner's two creases into the convex cone of their tangents, so a sector of 180° or more
-//! folds at its apex: a flat sector's bisector is then an infinitely sharp crease too (to the
-//! arc, a crease, so no dart: OpenSubdiv's limit is inexact at darts), which splits the
-//! apex's span into two halves below 180°. A pole's sector of 180° or more still folds there
-//! (its first face in each half).
+//! spans the other half the same way. So the apex has valence 3 (4 with meridian caps), the
+//! quarter points valence 3, the other vertices 4: no vertex of valence ≈ `n`, and as each
+//! half spans at most 180° no quad has a reflex angle. Each patch is a quarter of a full
+//! turn's grid cap ([`crate::construct::pole_cap`]): its vertices lie, as a relative radius ρ
+//! and an angle θ, on the L-shaped lines `max(x, y) = ρ k` mapped to circles, uniformly in
+//! angle (`square_polar`), so the radial steps are `1/k` of the radius everywhere, also at
+//! the quarter points (a Coons patch squeezed them to nothing there, next to the ring's long
+//! cells, and the interpolating fit folded). A flat cap scales ρ by the ring's radius in the
+//! ring's plane, a pole maps `(ρ, θ)` onto the surface through [`cap_point`] (the same
+//! placement as a full turn's pole cap), and replaces up to `k` profile intervals (its
+//! radial lines have `k` intervals; see `RevolveInput::grid`), so that its cells are about as
+//! large as the side's faces. A pole's apex is an infinitely sharp corner: the two boundary
+//! meridians meet there at the wedge angle, and with caps three creases meet there.
+//! Catmull-Clark's corner rule maps the faces between a corner's two creases into the convex
+//! cone of their tangents, so a span of 180° or more between two creases folds at the apex,
+//! and one close to it leaves the limit normal there ill-conditioned: a sector wider than
+//! `SPAN_LIMIT` (150°) creases its bisector, which splits the apex's span into two halves
+//! below 150°. The crease runs on to a crease or a boundary (OpenSubdiv's limit is inexact
+//! at darts, where a crease ends): a flat sector's to its crease ring, a pole's along the
+//! side's middle meridian to the other end (its sector's bisector, a crease ring or the open
+//! end), an infinitely sharp crease on a smooth surface whose two sides both interpolate the
+//! surface's data points.
 //!
 //! *Meridian caps* (`"caps": "flat"`; both ends then have a sector). Each meridian plane is
 //! closed by one structured grid. Its boundary is the bottom sector's radial line (`k`
@@ -77,6 +84,35 @@ struct Sector {
     apex: u32,
     /// Vertex ids from the apex to the ring, along θ = 0 and along θ = angle.
     radials: [Vec<u32>; 2],
+    /// The ring position (meridian column) of its bisector if that is creased.
+    creased_column: Option<usize>,
+}
+
+/// Largest span (radians, 150°) left between two creases at a sector's apex: the corner rule
+/// maps the faces between two creases at an infinitely sharp corner into the convex cone of
+/// the creases' tangents, so a span of 180° or more folds, and one close to 180° leaves the
+/// limit normal at the apex ill-conditioned.
+const SPAN_LIMIT: f64 = 5.0 * PI / 6.0;
+
+/// Where grid point `(x, y)` (0 to `m` each) of a sector patch lies, as a relative radius and
+/// a fraction of the patch's span: the patch is a quarter of a full turn's grid cap
+/// ([`crate::construct::pole_cap`]), whose concentric squares map to circles: the L-shaped
+/// square line `max(x, y) = ρ m` to the circle of radius ρ, uniformly in angle from the
+/// radial line at 0 (`y = 0`) through the corner `(ρ m, ρ m)` (half the span) to the one at
+/// the span (`x = 0`). So the radial steps are `1 / m` everywhere, also at the patch's
+/// corner in the middle of its arc, where a Coons patch squeezed them to nothing.
+fn square_polar(x: usize, y: usize, m: usize) -> (f64, f64) {
+    let r = x.max(y);
+    if r == 0 {
+        return (0.0, 0.0);
+    }
+    let (x, y, r) = (x as f64, y as f64, r as f64);
+    let turn = if x >= y {
+        0.5 * y / r
+    } else {
+        1.0 - 0.5 * x / r
+    };
+    (r / m as f64, turn)
 }
 
 /// The wedge under construction: the side's parts plus caps.
@@ -183,11 +219,8 @@ impl Wedge {
         for f in &quads {
             for (a, b) in edges(f) {
                 self.directed.insert((a, b));
-                if creased && !own.contains(&(b, a)) && self.creased.insert((a.min(b), a.max(b))) {
-                    self.parts.creases.push(Crease {
-                        vertices: [a, b],
-                        sharpness: SHARPNESS_INFINITE,
-                    });
+                if creased && !own.contains(&(b, a)) {
+                    self.crease(a, b);
                 }
             }
             self.parts.face_sizes.push(4);
@@ -196,93 +229,83 @@ impl Wedge {
     }
 
     /// Close `ring` (`4k + 1` ids from θ = 0 to θ = `angle`) with the two-patch sector
-    /// layout; `place(ρ, θ)` gives the data point at relative radius ρ and angle θ.
+    /// layout (see the module documentation); `place(ρ, θ)` gives the data point at relative
+    /// radius ρ and angle θ. `flat`: a flat end, whose boundary edges become creases.
     fn sector(
         &mut self,
         end: usize,
         ring: &[u32],
         angle: f64,
         place: &dyn Fn(f64, f64) -> DVec3,
-        creased: bool,
+        flat: bool,
     ) -> Sector {
         let k = (ring.len() - 1) / 4;
+        let half = angle / 2.0;
         let at = |rho: f64, theta: f64| DesignCoord::Cap { end, rho, theta };
         let apex = self.add_vertex(place(0.0, 0.0), at(0.0, 0.0));
-        // A radial line at θ from the apex to ring vertex `end`.
-        let radial = |w: &mut Wedge, theta: f64, end: u32| -> Vec<u32> {
-            let mut ids = vec![apex];
-            ids.extend((1..k).map(|j| {
-                let rho = j as f64 / k as f64;
-                w.add_vertex(place(rho, theta), at(rho, theta))
-            }));
-            ids.push(end);
-            ids
-        };
-        let first = radial(self, 0.0, ring[0]);
-        let mid = radial(self, angle / 2.0, ring[2 * k]);
-        let last = radial(self, angle, ring[4 * k]);
-        // Half 0 spans θ in [0, angle/2], half 1 mirrors it (θ → angle − θ, ring p → 4k − p).
-        let half = angle / 2.0;
-        let unit = |rho: f64, theta: f64| DVec2::new(rho * theta.cos(), rho * theta.sin());
-        let t = uniform(k);
-        let left: Vec<DVec2> = t.iter().map(|&r| unit(r, half)).collect();
-        let bottom: Vec<DVec2> = t.iter().map(|&r| unit(r, 0.0)).collect();
-        let right: Vec<DVec2> = t.iter().map(|&f| unit(1.0, f * half / 2.0)).collect();
-        let top: Vec<DVec2> = t
-            .iter()
-            .map(|&f| unit(1.0, half - f * half / 2.0))
+        // The radial lines at θ = 0, angle / 2 and angle, from the apex to ring vertex 2kp.
+        let radials: Vec<Vec<u32>> = (0..3)
+            .map(|p| {
+                let theta = p as f64 * half;
+                let mut ids = vec![apex];
+                ids.extend((1..k).map(|j| {
+                    let rho = j as f64 / k as f64;
+                    self.add_vertex(place(rho, theta), at(rho, theta))
+                }));
+                ids.push(ring[2 * k * p]);
+                ids
+            })
             .collect();
-        let inner = coons(&left, &right, &bottom, &top, &t, &t);
+        // Patch p spans θ from p·half to (p + 1)·half: `ids[0][j]` its first radial line,
+        // `ids[i][0]` its second, `ids[i][k]` the ring from the first to the patch's middle,
+        // `ids[k][j]` the ring from the second back to the middle.
         let mut quads = Vec::new();
-        for (h, radial) in [(0, &first), (1, &last)] {
-            let ring_at = |p: usize| ring[if h == 0 { p } else { 4 * k - p }];
+        for p in 0..2 {
+            let ring_at = |q: usize| ring[2 * k * p + q];
             let mut ids = vec![vec![0u32; k + 1]; k + 1];
             for i in 0..=k {
                 for j in 0..=k {
                     ids[i][j] = if i == 0 {
-                        radial[j]
+                        radials[p][j]
                     } else if j == 0 {
-                        mid[i]
+                        radials[p + 1][i]
                     } else if j == k {
                         ring_at(i)
                     } else if i == k {
                         ring_at(2 * k - j)
                     } else {
-                        let q = inner[i][j];
-                        let theta = q.y.atan2(q.x);
-                        let theta = if h == 0 { theta } else { angle - theta };
-                        self.add_vertex(place(q.length(), theta), at(q.length(), theta))
+                        let (rho, share) = square_polar(j, i, k);
+                        let theta = (p as f64 + share) * half;
+                        self.add_vertex(place(rho, theta), at(rho, theta))
                     };
                 }
             }
-            let mut half = grid_quads(&ids);
-            if h == 1 {
-                // The mirror image runs the other way round.
-                for f in &mut half {
-                    f.swap(1, 3);
-                }
-            }
-            quads.extend(half);
+            quads.extend(grid_quads(&ids));
         }
-        self.add_patch(quads, creased);
-        if angle >= PI && creased {
-            // The apex is an infinitely sharp corner, whose faces Catmull-Clark's corner rule
-            // maps into the convex cone of its two crease tangents: a reflex (or straight)
-            // span folds. A crease along the whole bisector of a flat sector splits it in
-            // two and ends at the crease ring (a dart, where OpenSubdiv's limit is inexact,
-            // is avoided; a pole's sector has no crease to end at and is left as it is).
-            for e in mid.windows(2) {
-                if self.creased.insert((e[0].min(e[1]), e[0].max(e[1]))) {
-                    self.parts.creases.push(Crease {
-                        vertices: [e[0], e[1]],
-                        sharpness: SHARPNESS_INFINITE,
-                    });
-                }
+        self.add_patch(quads, flat);
+        // The apex is an infinitely sharp corner: a span between two creases there must stay
+        // below SPAN_LIMIT, so a wider sector creases its bisector (a flat sector's crease ends
+        // at its crease ring, a pole's goes on along the side's meridian: `wedge_parts`).
+        let bisector = angle > SPAN_LIMIT;
+        if bisector {
+            for e in radials[1].windows(2) {
+                self.crease(e[0], e[1]);
             }
         }
         Sector {
             apex,
-            radials: [first, last],
+            radials: [radials[0].clone(), radials[2].clone()],
+            creased_column: bisector.then_some(2 * k),
+        }
+    }
+
+    /// Tag the edge `(a, b)` as an infinitely sharp crease (once).
+    fn crease(&mut self, a: u32, b: u32) {
+        if self.creased.insert((a.min(b), a.max(b))) {
+            self.parts.creases.push(Crease {
+                vertices: [a, b],
+                sharpness: SHARPNESS_INFINITE,
+            });
         }
     }
 
@@ -425,12 +448,7 @@ impl Wedge {
             }
         }
         for (v, w) in splits {
-            if self.creased.insert((v.min(w), v.max(w))) {
-                self.parts.creases.push(Crease {
-                    vertices: [v, w],
-                    sharpness: SHARPNESS_INFINITE,
-                });
-            }
+            self.crease(v, w);
         }
     }
 
@@ -696,6 +714,13 @@ pub fn wedge_parts(
                     |rho: f64, theta: f64| cap_point(profile, s, pole, rho, theta / TAU);
                 let sector = w.sector(end, &ring_ids(i), angle, &on_surface, false);
                 tips.push(sector.apex);
+                // A pole's creased radial line goes on along the side's meridian to the
+                // other end (a crease ending inside the surface would be a dart).
+                if let Some(c) = sector.creased_column {
+                    for r in 1..rows {
+                        w.crease(ring_ids(r - 1)[c], ring_ids(r)[c]);
+                    }
+                }
                 sector
             }
         };

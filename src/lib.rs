@@ -12,6 +12,7 @@
 //! - [`eval`]: exact limit positions, derivatives and stencils;
 //! - [`curves`]: curve input (splines broken at corners, polylines);
 //! - [`construct`]: constructions (profiles, sweeps, ...);
+//! - [`tessellate`]: triangles or quads on the limit surface, watertight;
 //! - [`fit`]: interpolating fit of control points to data points;
 //! - [`io`]: OBJ with OpenSubdiv tag lines;
 //! - [`ffi`]: the C ABI (`include/profsubd.h`);
@@ -31,6 +32,7 @@ pub mod io;
 pub mod mesh;
 pub mod options;
 pub mod refine;
+pub mod tessellate;
 pub mod topology;
 
 pub use error::{Error, Result};

@@ -105,6 +105,15 @@ pub fn run(args: &TessellateArgs) -> Result<i32> {
             max_rate: args.max_rate,
         },
     )?;
+    if !t.unmet.is_empty() {
+        eprintln!(
+            "profsubd: warning: {} faces reach --max-rate {} and still miss the tolerance \
+             (first: parametric face {}); raise --max-rate",
+            t.unmet.len(),
+            args.max_rate,
+            t.unmet[0]
+        );
+    }
     write_surface_file(&t, &args.output, format, args.up.into())?;
     let r = t.edge_report();
     println!(

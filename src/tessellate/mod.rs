@@ -6,10 +6,10 @@
 //!   sub-faces (each covers half of the face's edges, so the N-gon's edges get `N` segments,
 //!   or `N + 1` for odd `N`, like a quad's);
 //! - **adaptive** ([`Rate::Tolerance`]`(t)`): `n` from the face's second differences, then
-//!   raised on the faces where a triangle is farther than `0.9 t` from the surface at its
-//!   check points (centroid, edge midpoints and three interior points, compared with the
-//!   surface at the same `(u, v)`), until none is or the face reaches
-//!   [`TessellateOptions::max_rate`].
+//!   raised on the faces where a triangle is farther than `0.8 t` from the surface at its
+//!   check points ([`CHECK_POINTS`], compared with the surface at the same `(u, v)`), until
+//!   none is or the face reaches
+//!   [`TessellateOptions::max_rate`] (listed in [`Tessellation::unmet`] if still over).
 //!
 //! **Watertight by construction.** A point of the tessellation is named by where it lies on
 //! the control mesh — a control vertex, the `m`-th of `R` points of a control edge, the
@@ -120,6 +120,10 @@ pub struct Tessellation {
     pub face_ptex: Vec<u32>,
     /// `(u, v)` of each polygon corner in that parametric face (parallel to `face_vertices`).
     pub corner_uv: Vec<[f64; 2]>,
+    /// Adaptive mode: the parametric faces that reached [`TessellateOptions::max_rate`] and
+    /// still miss the tolerance at a check point (near extraordinary vertices of high valence
+    /// the error falls slowly with the rate); empty otherwise.
+    pub unmet: Vec<u32>,
 }
 
 impl Tessellation {
@@ -207,16 +211,17 @@ pub fn tessellate(ev: &Evaluator, options: &TessellateOptions) -> Result<Tessell
             }
             let mut rates = plan.estimated_rates(t, options.max_rate)?;
             loop {
-                let tess = plan.build(&rates, options.quads)?;
-                let over = faces_over_tolerance(ev, &tess, 0.9 * t)?;
+                let mut tess = plan.build(&rates, options.quads)?;
+                let over = faces_over_tolerance(ev, &tess, CHECK_MARGIN * t)?;
                 let mut raised = false;
-                for p in over {
+                for &p in &over {
                     let r = &mut rates[p as usize];
                     let next = (*r + (*r).div_ceil(2)).min(options.max_rate);
                     raised |= next > *r;
                     *r = next;
                 }
                 if !raised {
+                    tess.unmet = over;
                     return Ok(tess);
                 }
             }
@@ -563,16 +568,26 @@ fn fill_degenerate_normals(t: &mut Tessellation) {
     t.vertex_normals = vertex.into_iter().map(DVec3::normalize_or_zero).collect();
 }
 
-/// Barycentric check points of a triangle: centroid, edge midpoints, three interior points.
-pub const CHECK_POINTS: [[f64; 3]; 7] = [
-    [1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0],
+/// Barycentric check points of a triangle: the points of its 4-division lattice other than
+/// its corners (edge points included: an edge's deviation is the same from both sides).
+pub const CHECK_POINTS: [[f64; 3]; 12] = [
+    [0.75, 0.25, 0.0],
     [0.5, 0.5, 0.0],
+    [0.25, 0.75, 0.0],
+    [0.0, 0.75, 0.25],
     [0.0, 0.5, 0.5],
+    [0.0, 0.25, 0.75],
+    [0.25, 0.0, 0.75],
     [0.5, 0.0, 0.5],
-    [2.0 / 3.0, 1.0 / 6.0, 1.0 / 6.0],
-    [1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0],
-    [1.0 / 6.0, 1.0 / 6.0, 2.0 / 3.0],
+    [0.75, 0.0, 0.25],
+    [0.5, 0.25, 0.25],
+    [0.25, 0.5, 0.25],
+    [0.25, 0.25, 0.5],
 ];
+
+/// Fraction of the tolerance the check points must meet, a margin for the deviation between
+/// them.
+const CHECK_MARGIN: f64 = 0.8;
 
 /// Largest distance, over the barycentric points `bary`, between a point of polygon `k`'s
 /// triangles and the limit surface at the same `(u, v)` of its parametric face.

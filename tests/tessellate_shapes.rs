@@ -91,11 +91,7 @@ fn check(path: &Path, rate: u32, tol_rel: f64) -> Outcome {
             max_rate: 24,
             ..TessellateOptions::default()
         };
-        let t0 = std::time::Instant::now();
         let t = tessellate(&ev, &options).unwrap();
-        if t0.elapsed().as_secs_f64() > 1.0 {
-            eprintln!("{name} {r:?}: {:?}", t0.elapsed());
-        }
         assert!(t.num_faces() > 0, "{name}");
         let report = t.edge_report();
         if closed {

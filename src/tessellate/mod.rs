@@ -270,7 +270,7 @@ impl<'a> Plan<'a> {
             if size == 4 {
                 rates.push(n);
             } else {
-                rates.extend(std::iter::repeat_n(n.div_ceil(2), size));
+                rates.extend(std::iter::repeat(n.div_ceil(2)).take(size));
             }
         }
         rates

@@ -137,7 +137,7 @@ pub fn stitch(n: u32, sides: [u32; 4]) -> Stitched {
             out.polygon(&[at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
         }
     }
-    for s in 0..4usize {
+    for (s, &segments) in sides.iter().enumerate() {
         // The inner ring's row facing side s, in the side's direction.
         let row: Vec<u32> = (1..n)
             .map(|k| match s {
@@ -147,7 +147,7 @@ pub fn stitch(n: u32, sides: [u32; 4]) -> Stitched {
                 _ => at(1, n - k),
             })
             .collect();
-        let p = sides[s] as usize;
+        let p = segments as usize;
         let q = row.len() - 1;
         // Fractions along the side: outer k/p, inner (1 + k)/n.
         let (mut i, mut j) = (0usize, 0usize);

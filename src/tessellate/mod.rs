@@ -17,7 +17,7 @@
 //! or a point inside one parametric face — and evaluated once, by the first face that asks
 //! for it. Each control edge has one segment count `R`, the largest its faces ask for (even
 //! when an N-gon touches it, so that its midpoint is a point); a face whose own rate is lower
-//! joins its sides to its inner grid with a strip of triangles ([`stitch`]), so no vertex
+//! joins its sides to its inner grid with a strip of triangles ([`mod@stitch`]), so no vertex
 //! lies on another face's edge: no T-junction.
 //!
 //! **Positions** are the evaluator's ([`Evaluator::evaluate`]) at the point's recorded

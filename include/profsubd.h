@@ -138,6 +138,46 @@ typedef enum profsubd_triangle_rule {
 } profsubd_triangle_rule;
 
 /**
+ * Values for the `format` of `profsubd_tessellation_write` (passed as `int32_t`).
+ */
+typedef enum profsubd_surface_format {
+    /**
+     * Binary STL (triangles, `float` coordinates).
+     */
+    PROFSUBD_FORMAT_STL = 0,
+    /**
+     * ASCII STL.
+     */
+    PROFSUBD_FORMAT_STL_ASCII = 1,
+    /**
+     * OFF.
+     */
+    PROFSUBD_FORMAT_OFF = 2,
+    /**
+     * Binary PLY with per-vertex normals.
+     */
+    PROFSUBD_FORMAT_PLY = 3,
+    /**
+     * OBJ with normals (split along infinitely sharp creases).
+     */
+    PROFSUBD_FORMAT_OBJ = 4,
+} profsubd_surface_format;
+
+/**
+ * Values for `up` (passed as `int32_t`).
+ */
+typedef enum profsubd_up_axis {
+    /**
+     * Z up: coordinates unchanged.
+     */
+    PROFSUBD_UP_Z = 0,
+    /**
+     * Y up: `(x, y, z)` written as `(x, z, -y)`.
+     */
+    PROFSUBD_UP_Y = 1,
+} profsubd_up_axis;
+
+/**
  * Values for the `quantity` of `profsubd_limit_stencils_new` (passed as `int32_t`).
  */
 typedef enum profsubd_limit_quantity {
@@ -324,6 +364,14 @@ typedef struct profsubd_options profsubd_options;
  * `offsets[i] .. offsets[i + 1] - 1` of `indices` (control vertices) and `weights`.
  */
 typedef struct profsubd_stencil_table profsubd_stencil_table;
+
+/**
+ * A tessellated limit surface (opaque, immutable, safe to share between threads). Create
+ * with `profsubd_tessellation_new_uniform` or `profsubd_tessellation_new_adaptive`, release
+ * with `profsubd_tessellation_free`. Vertices lie on the limit surface; polygons are
+ * counter-clockwise seen from the side `du x dv` points to.
+ */
+typedef struct profsubd_tessellation profsubd_tessellation;
 
 /**
  * How densely `profsubd_check_folds` samples (NULL for the defaults 9, 4, 45).
@@ -1330,6 +1378,136 @@ enum profsubd_status profsubd_sweep(const double *profile,
                                     size_t num_trajectory_points,
                                     const struct profsubd_options *options,
                                     struct profsubd_fitted **out);
+
+/**
+ * Tessellate uniformly: `rate` x `rate` cells per quad, `ceil(rate / 2)` per sub-face of
+ * an N-gon (1 <= rate <= 4096). `quads` non-zero keeps grid cells as quads. Errors:
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a rate out of range.
+ */
+enum profsubd_status profsubd_tessellation_new_uniform(const struct profsubd_evaluator *evaluator,
+                                                       uint32_t rate,
+                                                       int32_t quads,
+                                                       struct profsubd_tessellation **out);
+
+/**
+ * Tessellate adaptively: no triangle farther than `tolerance` (model units, > 0) from the
+ * limit surface at its check points, rates up to `max_rate` (1..=4096; faces that reach it
+ * and still miss are counted by `profsubd_tessellation_num_unmet`). Errors:
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a tolerance that is not positive and finite, or a
+ * `max_rate` out of range.
+ */
+enum profsubd_status profsubd_tessellation_new_adaptive(const struct profsubd_evaluator *evaluator,
+                                                        double tolerance,
+                                                        uint32_t max_rate,
+                                                        int32_t quads,
+                                                        struct profsubd_tessellation **out);
+
+/**
+ * Release a tessellation (NULL is a no-op).
+ */
+void profsubd_tessellation_free(struct profsubd_tessellation *tessellation);
+
+/**
+ * Write counts: vertices, polygons, face-vertex entries, normals, parametric faces that
+ * missed the tolerance at the maximum rate. Any output pointer may be NULL.
+ */
+enum profsubd_status profsubd_tessellation_counts(const struct profsubd_tessellation *tessellation,
+                                                  size_t *num_vertices,
+                                                  size_t *num_faces,
+                                                  size_t *num_face_vertices,
+                                                  size_t *num_normals,
+                                                  size_t *num_unmet);
+
+/**
+ * Copy the vertex positions (3 doubles per vertex). `capacity` and `*needed` count
+ * vertices (copy-out protocol).
+ */
+enum profsubd_status profsubd_tessellation_get_positions(const struct profsubd_tessellation *tessellation,
+                                                         double *out,
+                                                         size_t capacity,
+                                                         size_t *needed);
+
+/**
+ * Copy one unit normal per vertex (3 doubles; split normals averaged). `capacity` and
+ * `*needed` count vertices.
+ */
+enum profsubd_status profsubd_tessellation_get_vertex_normals(const struct profsubd_tessellation *tessellation,
+                                                              double *out,
+                                                              size_t capacity,
+                                                              size_t *needed);
+
+/**
+ * Copy the normals (3 doubles each), split along infinitely sharp creases; polygon
+ * corners index them (`profsubd_tessellation_get_face_normals`). `capacity` and
+ * `*needed` count normals.
+ */
+enum profsubd_status profsubd_tessellation_get_normals(const struct profsubd_tessellation *tessellation,
+                                                       double *out,
+                                                       size_t capacity,
+                                                       size_t *needed);
+
+/**
+ * Copy the polygon sizes (3 or 4). `capacity` and `*needed` count polygons.
+ */
+enum profsubd_status profsubd_tessellation_get_face_sizes(const struct profsubd_tessellation *tessellation,
+                                                          uint32_t *out,
+                                                          size_t capacity,
+                                                          size_t *needed);
+
+/**
+ * Copy the polygon vertex indices (0-based), polygon after polygon. `capacity` and
+ * `*needed` count face-vertex entries.
+ */
+enum profsubd_status profsubd_tessellation_get_face_vertices(const struct profsubd_tessellation *tessellation,
+                                                             uint32_t *out,
+                                                             size_t capacity,
+                                                             size_t *needed);
+
+/**
+ * Copy the normal index of each polygon corner. `capacity` and `*needed` count
+ * face-vertex entries.
+ */
+enum profsubd_status profsubd_tessellation_get_face_normals(const struct profsubd_tessellation *tessellation,
+                                                            uint32_t *out,
+                                                            size_t capacity,
+                                                            size_t *needed);
+
+/**
+ * Copy the parametric (Ptex) face of each polygon. `capacity` and `*needed` count
+ * polygons.
+ */
+enum profsubd_status profsubd_tessellation_get_face_ptex(const struct profsubd_tessellation *tessellation,
+                                                         uint32_t *out,
+                                                         size_t capacity,
+                                                         size_t *needed);
+
+/**
+ * Copy the `(u, v)` of each polygon corner in its parametric face (2 doubles).
+ * `capacity` and `*needed` count face-vertex entries.
+ */
+enum profsubd_status profsubd_tessellation_get_corner_uv(const struct profsubd_tessellation *tessellation,
+                                                         double *out,
+                                                         size_t capacity,
+                                                         size_t *needed);
+
+/**
+ * Copy where each vertex was evaluated: `face u v` as 3 doubles (the Ptex face as a
+ * double, exact). `capacity` and `*needed` count vertices.
+ */
+enum profsubd_status profsubd_tessellation_get_vertex_points(const struct profsubd_tessellation *tessellation,
+                                                             double *out,
+                                                             size_t capacity,
+                                                             size_t *needed);
+
+/**
+ * Write the tessellation to `path` in `format` (`PROFSUBD_FORMAT_*`) with `up`
+ * (`PROFSUBD_UP_Z` or `PROFSUBD_UP_Y`). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for a
+ * value out of range, `PROFSUBD_ERROR_IO` if the file cannot be written.
+ */
+enum profsubd_status profsubd_tessellation_write(const struct profsubd_tessellation *tessellation,
+                                                 const char *path,
+                                                 int32_t format,
+                                                 int32_t up);
 
 /**
  * The library's version as "MAJOR.MINOR.PATCH" (static; never free it). Compare

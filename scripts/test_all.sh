@@ -12,7 +12,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 BUILD_DIR="${BUILD_DIR:-build}"
 JOBS="${JOBS:-$(nproc 2>/dev/null || echo 2)}"
-APT_PACKAGES=(cmake make g++ pkg-config libosd-dev libopenmesh-dev libclang-dev valgrind binutils)
+APT_PACKAGES=(cmake make g++ pkg-config libosd-dev libopenmesh-dev libclang-dev valgrind binutils python3-pip openscad)
 START=$SECONDS
 passed=0
 failed=0
@@ -132,6 +132,31 @@ example_find_package() {
     readelf -d "$dir/cube_example" | grep -q 'NEEDED.*\[libprofsubd\.so\.0\]'
 }
 
+# The build tree as is: a fresh copy of the sources built with plain cargo (sharing the
+# compiled dependencies through CARGO_TARGET_DIR), then a C program linked against
+# target/release starts; build.rs makes target/release/libprofsubd.so.0 (the SONAME).
+build_tree_linking() {
+    local clone="$PREFIX_ROOT/clone" target="${CARGO_TARGET_DIR:-$ROOT/target}"
+    mkdir -p "$clone"
+    git -C "$ROOT" archive HEAD | tar -x -C "$clone"
+    rm -f "$target/release/libprofsubd.so.0"
+    (cd "$clone" && CARGO_TARGET_DIR="$target" cargo build --release --tests)
+    [ -L "$target/release/libprofsubd.so.0" ] || { echo "no libprofsubd.so.0 in $target/release" >&2; return 1; }
+    cc -std=c99 -I"$clone/include" "$clone/examples/c/cube_example.c" -o "$PREFIX_ROOT/cube_build_tree" \
+        -L"$target/release" -lprofsubd -Wl,-rpath,"$target/release"
+    readelf -d "$PREFIX_ROOT/cube_build_tree" | grep -q 'NEEDED.*\[libprofsubd\.so\.0\]'
+    "$PREFIX_ROOT/cube_build_tree" "$PREFIX_ROOT/cube_build_tree.obj"
+}
+
+# usd-core and trimesh for tests/external_readers.rs (openscad comes from APT_PACKAGES).
+python_packages() {
+    if ! python3 -c 'import pxr.Usd, trimesh' 2>/dev/null; then
+        python3 -m pip install --break-system-packages usd-core trimesh \
+            || python3 -m pip install usd-core trimesh
+    fi
+    python3 -c 'import pxr.Usd, trimesh; print("usd-core and trimesh present")'
+}
+
 example_pkg_config() {
     local dir="$PREFIX_ROOT/example-pkg-config" pcdir
     mkdir -p "$dir"
@@ -152,6 +177,7 @@ export PROFSUBD_OSD_SHAPES="$SHAPES"
 
 step "dependencies" install_dependencies
 export PATH="$HOME/.cargo/bin:$PATH"
+step "python packages (usd-core, trimesh)" python_packages
 step "cargo fmt --check" rust_fmt
 step "cargo clippy --all-targets -- -D warnings" rust_clippy
 step "cargo doc (warnings are errors)" rust_doc
@@ -162,6 +188,7 @@ step "valgrind --error-exitcode=1 over the C API harness" ctest_valgrind
 step "cmake --install into a temporary prefix" install_package
 step "C example via find_package(profsubd) (installed package)" example_find_package
 step "C example via pkg-config (installed package)" example_pkg_config
+step "fresh sources, plain cargo build: C program linked against target/release runs" build_tree_linking
 
 section "summary"
 echo "total time: $((SECONDS - START)) s"

@@ -94,6 +94,7 @@
 //! - [`eval`]: exact limit positions, derivatives and stencils;
 //! - [`curves`]: curve input (splines broken at corners, polylines);
 //! - [`construct`]: the constructions, their shared settings and result;
+//! - [`tessellate`]: triangles or quads on the limit surface, watertight;
 //! - `fit` (internal): interpolating fit of control points to data points ([`FitReport`],
 //!   [`FitOptions`] re-exported);
 //! - [`io`]: OBJ with OpenSubdiv tag lines;
@@ -114,6 +115,7 @@ pub mod io;
 pub mod mesh;
 pub mod options;
 pub mod refine;
+pub mod tessellate;
 #[cfg(test)]
 pub(crate) mod test_support;
 pub mod topology;

@@ -18,6 +18,7 @@ pub mod profile;
 pub mod refine;
 pub mod revolve;
 pub mod sweep;
+pub mod tessellate;
 
 use std::ffi::OsString;
 use std::path::Path;
@@ -123,6 +124,16 @@ pub enum Command {
     /// across it (mitered), and fits the control points so that the exact limit surface
     /// passes through every data point.
     Sweep(sweep::SweepArgs),
+    /// Tessellate the limit surface: triangles or quads on it, watertight, as STL, OFF, PLY
+    /// or OBJ (format from the extension or --format).
+    ///
+    /// Uniform (--rate N: N x N per quad, N-gons through their sub-faces) or adaptive
+    /// (--tolerance T: no triangle farther than T from the surface). Points on shared edges
+    /// are computed once, so the result is closed wherever the control mesh is; normals
+    /// come from the exact derivatives, split along infinitely sharp creases (OBJ keeps the
+    /// split, PLY averages it, STL has facet normals). Holes and faces without limit
+    /// surface are left out. --up y writes (x, y, z) as (x, z, -y).
+    Tessellate(tessellate::TessellateArgs),
 }
 
 /// Subdivision option flags. Given on the command line they override the tags of the mesh
@@ -232,6 +243,7 @@ pub fn dispatch(command: &Command) -> Result<i32> {
         Command::Profile(args) => profile::run(args),
         Command::Revolve(args) => revolve::run(args),
         Command::Sweep(args) => sweep::run(args),
+        Command::Tessellate(args) => tessellate::run(args),
     }
 }
 

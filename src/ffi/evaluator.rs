@@ -33,7 +33,7 @@ impl Handle for profsubd_evaluator {
     const NAME: &'static str = "profsubd_evaluator";
 }
 
-unsafe fn evaluator_arg<'a>(p: *const profsubd_evaluator) -> FfiResult<&'a Evaluator> {
+pub(crate) unsafe fn evaluator_arg<'a>(p: *const profsubd_evaluator) -> FfiResult<&'a Evaluator> {
     handle::borrow(p, "evaluator")
 }
 

@@ -70,6 +70,7 @@ pub mod refine;
 pub mod revolve;
 pub mod status;
 pub mod sweep;
+pub mod tessellate;
 pub mod version;
 
 pub use evaluator::profsubd_evaluator;
@@ -80,3 +81,4 @@ pub use mesh::{profsubd_mesh, profsubd_mesh_desc};
 pub use mesh_topology::profsubd_mesh_report;
 pub use options::profsubd_options;
 pub use status::profsubd_status;
+pub use tessellate::profsubd_tessellation;

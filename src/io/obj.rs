@@ -51,6 +51,7 @@ use crate::mesh::Mesh;
 
 pub use read::parse_obj;
 pub use write::to_obj_string;
+pub(crate) use write::Num;
 
 /// A mesh read from an OBJ file, with what the reader ignored.
 #[derive(Debug, Clone, PartialEq)]

@@ -65,7 +65,7 @@ pub fn to_obj_string(mesh: &Mesh) -> String {
 /// A float printed with the fewest digits that parse back to the same value: plain decimal
 /// for ordinary magnitudes, exponent form (`1e-7`) for very small or large ones so that
 /// no number turns into hundreds of digits.
-struct Num<T>(T);
+pub(crate) struct Num<T>(pub(crate) T);
 
 impl<T: Display + LowerExp + Into<f64> + Copy> Display for Num<T> {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {

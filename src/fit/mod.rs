@@ -372,16 +372,18 @@ impl DenseLu {
         let n = self.n;
         let mut x: Vec<DVec3> = self.perm.iter().map(|&i| rhs[i]).collect();
         for i in 0..n {
+            let row = &self.lu[i * n..i * n + i];
             let mut sum = x[i];
-            for j in 0..i {
-                sum -= x[j] * self.lu[i * n + j];
+            for (xj, l) in x[..i].iter().zip(row) {
+                sum -= *xj * *l;
             }
             x[i] = sum;
         }
         for i in (0..n).rev() {
+            let row = &self.lu[i * n + i + 1..(i + 1) * n];
             let mut sum = x[i];
-            for j in i + 1..n {
-                sum -= x[j] * self.lu[i * n + j];
+            for (xj, u) in x[i + 1..].iter().zip(row) {
+                sum -= *xj * *u;
             }
             x[i] = sum / self.lu[i * n + i];
         }

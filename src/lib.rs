@@ -28,6 +28,7 @@ pub mod eval;
 pub mod ffi;
 pub mod fit;
 pub mod io;
+pub(crate) mod math;
 pub mod mesh;
 pub mod options;
 pub mod refine;

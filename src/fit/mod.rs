@@ -436,6 +436,7 @@ pub fn fit_limit(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math;
 
     /// The limit mask of a closed ring of cubic B-spline points (1/6, 4/6, 1/6), plus one
     /// identity row: non-trivial, well conditioned, with a known answer.
@@ -467,7 +468,7 @@ mod tests {
         let truth: Vec<DVec3> = (0..n)
             .map(|i| {
                 let t = i as f64 * 0.3;
-                DVec3::new(t.cos(), t.sin(), t * t)
+                DVec3::new(math::cos(t), math::sin(t), t * t)
             })
             .collect();
         let d = a.apply(&truth);

@@ -1,6 +1,7 @@
 //! The axis and the four quadrant sweeps of Hui & Lai (2007), equations (1)–(4.3), with
 //! quadrants 3 and 4 written out as in `hui-lai-2007-sweep-equations.md`.
 
+use crate::math;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use glam::{DVec2, DVec3};
@@ -19,7 +20,7 @@ pub fn axis(c: &[DVec2; 4]) -> DVec3 {
 pub fn surface(theta: f64, c: &[DVec2; 4]) -> DVec3 {
     let a = axis(c);
     let theta = theta.rem_euclid(2.0 * PI);
-    let (sin, cos) = theta.sin_cos();
+    let (sin, cos) = math::sin_cos(theta);
     let q = theta / FRAC_PI_2;
     let (c1, c2, c3, c4) = (c[0], c[1], c[2], c[3]);
     if theta < FRAC_PI_2 {

@@ -33,6 +33,7 @@
 //! infinitely sharp corner ([`super::wedge`]; `samples_around` a multiple of 4). Profile
 //! corners give crease rings.
 
+use crate::math;
 use std::f64::consts::TAU;
 use std::path::Path;
 
@@ -234,7 +235,7 @@ impl RevolvedProfile {
 
 /// The point at `(r, z)` turned by `theta` radians about the z axis.
 pub fn revolve_point(p: DVec2, theta: f64) -> DVec3 {
-    DVec3::new(p.x * theta.cos(), p.x * theta.sin(), p.y)
+    DVec3::new(p.x * math::cos(theta), p.x * math::sin(theta), p.y)
 }
 
 impl RevolveInput {
@@ -549,8 +550,12 @@ mod tests {
             .map(|i| {
                 let t = -PI / 2.0 + PI * i as f64 / n as f64;
                 [
-                    if i == 0 || i == n { 0.0 } else { r * t.cos() },
-                    r * t.sin(),
+                    if i == 0 || i == n {
+                        0.0
+                    } else {
+                        r * math::cos(t)
+                    },
+                    r * math::sin(t),
                 ]
             })
             .collect()

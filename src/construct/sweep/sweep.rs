@@ -406,6 +406,7 @@ impl Design for GridDesign {
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
+    use crate::math;
     use std::f64::consts::TAU;
 
     /// `n` points on the circle of radius `r` about the origin, counter-clockwise.
@@ -413,7 +414,7 @@ pub(super) mod tests {
         (0..n)
             .map(|i| {
                 let t = TAU * i as f64 / n as f64;
-                [r * t.cos(), r * t.sin()]
+                [r * math::cos(t), r * math::sin(t)]
             })
             .collect()
     }
@@ -437,7 +438,7 @@ pub(super) mod tests {
         assert!(g.crease_rings.is_empty() && g.crease_columns.is_empty());
         let mut worst: f64 = 0.0;
         for p in g.rings.iter().flatten() {
-            let q = (p.truncate().length() - 2.0).hypot(p.z);
+            let q = ((p.truncate().length() - 2.0).powi(2) + p.z * p.z).sqrt();
             worst = worst.max((q - 0.5).abs());
         }
         assert!(worst < 2e-4, "torus deviation {worst}");

@@ -52,6 +52,7 @@
 //! data points lie in its plane; behind its creases its limit surface depends only on its own
 //! control points, and their fit is planar too, so the caps are flat in the limit.
 
+use crate::math;
 use std::collections::HashSet;
 use std::f64::consts::{PI, TAU};
 
@@ -223,7 +224,8 @@ impl Wedge {
         let last = radial(self, angle, ring[4 * k]);
         // Half 0 spans θ in [0, angle/2], half 1 mirrors it (θ → angle − θ, ring p → 4k − p).
         let half = angle / 2.0;
-        let unit = |rho: f64, theta: f64| DVec2::new(rho * theta.cos(), rho * theta.sin());
+        let unit =
+            |rho: f64, theta: f64| DVec2::new(rho * math::cos(theta), rho * math::sin(theta));
         let t = uniform(k);
         let left: Vec<DVec2> = t.iter().map(|&r| unit(r, half)).collect();
         let bottom: Vec<DVec2> = t.iter().map(|&r| unit(r, 0.0)).collect();
@@ -249,7 +251,7 @@ impl Wedge {
                         ring_at(2 * k - j)
                     } else {
                         let q = inner[i][j];
-                        let theta = q.y.atan2(q.x);
+                        let theta = math::atan2(q.y, q.x);
                         let theta = if h == 0 { theta } else { angle - theta };
                         self.add_vertex(place(q.length(), theta), at(q.length(), theta))
                     };
@@ -571,7 +573,7 @@ impl MeridianPlane {
 /// Whether the span at `v` from its neighbour `p` to its neighbour `n` that holds `q` is
 /// reflex (180° or more).
 fn is_reflex(v: DVec2, p: DVec2, n: DVec2, q: DVec2) -> bool {
-    let turn = |w: DVec2| (w - v).y.atan2((w - v).x);
+    let turn = |w: DVec2| math::atan2((w - v).y, (w - v).x);
     let ccw = |from: f64, to: f64| (to - from).rem_euclid(TAU);
     let (tp, tn, tq) = (turn(p), turn(n), turn(q));
     let span = if ccw(tp, tq) < ccw(tp, tn) {

@@ -51,7 +51,7 @@ fn refinement_above_its_ceilings_is_refused_before_allocating() {
         Err(Error::InvalidArgument(_))
     ));
     // The largest allowed stays allowed: one quad at level 8 is 2^18 face indices.
-    assert!(4 << (2 * MAX_LEVEL) <= MAX_REFINED_FACE_INDICES);
+    const { assert!(4 << (2 * MAX_LEVEL) <= MAX_REFINED_FACE_INDICES) };
     assert_eq!(
         refine_uniform(&grid(1), &options, MAX_LEVEL)
             .unwrap()

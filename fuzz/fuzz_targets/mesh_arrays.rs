@@ -36,14 +36,20 @@ fuzz_target!(|data: &[u8]| {
     }
     let nc = usize::from(b.u8() % 8);
     let crease_vertices: Vec<u32> = (0..2 * nc).map(|_| index(&mut b)).collect();
-    let crease_sharpness: Vec<f32> = (0..nc).map(|_| SHARPNESS[usize::from(b.u8() % 8)]).collect();
+    let crease_sharpness: Vec<f32> = (0..nc)
+        .map(|_| SHARPNESS[usize::from(b.u8() % 8)])
+        .collect();
     let nk = usize::from(b.u8() % 4);
     let corner_vertices: Vec<u32> = (0..nk).map(|_| index(&mut b)).collect();
-    let corner_sharpness: Vec<f32> = (0..nk).map(|_| SHARPNESS[usize::from(b.u8() % 8)]).collect();
+    let corner_sharpness: Vec<f32> = (0..nk)
+        .map(|_| SHARPNESS[usize::from(b.u8() % 8)])
+        .collect();
     let nh = usize::from(b.u8() % 3);
-    let hole_faces: Vec<u32> = (0..nh).map(|_| u32::from(b.u8()) % (nf as u32 + 1)).collect();
-    let desc = MeshDesc {
-        struct_size: std::mem::size_of::<MeshDesc>(),
+    let hole_faces: Vec<u32> = (0..nh)
+        .map(|_| u32::from(b.u8()) % (nf as u32 + 1))
+        .collect();
+    let desc = profsubd_mesh_desc {
+        struct_size: std::mem::size_of::<profsubd_mesh_desc>(),
         positions: positions.as_ptr(),
         num_vertices: nv,
         face_sizes: face_sizes.as_ptr(),
@@ -59,10 +65,10 @@ fuzz_target!(|data: &[u8]| {
         hole_faces: hole_faces.as_ptr(),
         num_holes: nh,
     };
-    let mut mesh: *mut Mesh = std::ptr::null_mut();
+    let mut mesh: *mut profsubd_mesh = std::ptr::null_mut();
     let status = unsafe { profsubd_mesh_new(&desc, &mut mesh) };
     check_error(status, "mesh_new");
-    if status == OK {
+    if status == PROFSUBD_OK {
         check_mesh(mesh, &mut b);
         unsafe { profsubd_mesh_free(mesh) };
     } else {

@@ -10,15 +10,22 @@ use libfuzzer_sys::fuzz_target;
 use profsubd_fuzz::*;
 
 fuzz_target!(|data: &[u8]| {
-    let split = if data.len() > 64 { data.len() - 48 } else { data.len() };
+    let split = if data.len() > 64 {
+        data.len() - 48
+    } else {
+        data.len()
+    };
     let (text, params) = data.split_at(split);
     let path = std::env::temp_dir().join(format!("profsubd-fuzz-{}.obj", std::process::id()));
-    std::fs::File::create(&path).unwrap().write_all(text).unwrap();
+    std::fs::File::create(&path)
+        .unwrap()
+        .write_all(text)
+        .unwrap();
     let c_path = CString::new(path.to_str().unwrap()).unwrap();
-    let mut mesh: *mut Mesh = std::ptr::null_mut();
+    let mut mesh: *mut profsubd_mesh = std::ptr::null_mut();
     let status = unsafe { profsubd_mesh_read_obj(c_path.as_ptr(), &mut mesh) };
     check_error(status, "mesh_read_obj");
-    if status == OK {
+    if status == PROFSUBD_OK {
         check_mesh(mesh, &mut Bytes(params));
         unsafe { profsubd_mesh_free(mesh) };
     } else {

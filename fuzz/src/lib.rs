@@ -1,83 +1,23 @@
-//! Shared code of the fuzz targets: the C API entry points they drive (declared here, so
-//! the targets do not depend on the crate's module layout, only on the stable C ABI) and
-//! the contract every mesh they obtain must satisfy.
-#![allow(non_camel_case_types)]
+//! Shared code of the fuzz targets: the C API (bindgen's translation of
+//! `include/profsubd.h`, see `build.rs`) and the contract every mesh they obtain must satisfy.
 
-use std::ffi::{c_char, CStr};
+use std::ffi::CStr;
 
-// Links the library, whose `#[no_mangle]` functions the declarations below name.
+// Links the library, whose `#[no_mangle]` functions the header declares.
 use profsubd as _;
 
-/// `profsubd_mesh_desc` of `include/profsubd.h`.
-#[repr(C)]
-pub struct MeshDesc {
-    pub struct_size: usize,
-    pub positions: *const f64,
-    pub num_vertices: usize,
-    pub face_sizes: *const u32,
-    pub num_faces: usize,
-    pub face_indices: *const u32,
-    pub num_face_indices: usize,
-    pub crease_vertices: *const u32,
-    pub crease_sharpness: *const f32,
-    pub num_creases: usize,
-    pub corner_vertices: *const u32,
-    pub corner_sharpness: *const f32,
-    pub num_corners: usize,
-    pub hole_faces: *const u32,
-    pub num_holes: usize,
+/// The C API as the header declares it.
+#[allow(
+    non_camel_case_types,
+    non_upper_case_globals,
+    non_snake_case,
+    dead_code
+)]
+pub mod capi {
+    include!(concat!(env!("OUT_DIR"), "/profsubd.rs"));
 }
 
-/// Opaque handles.
-pub enum Mesh {}
-pub enum Evaluator {}
-pub enum Options {}
-
-pub const OK: i32 = 0;
-
-extern "C" {
-    pub fn profsubd_mesh_new(desc: *const MeshDesc, out: *mut *mut Mesh) -> i32;
-    pub fn profsubd_mesh_free(mesh: *mut Mesh);
-    pub fn profsubd_mesh_read_obj(path: *const c_char, out: *mut *mut Mesh) -> i32;
-    pub fn profsubd_mesh_num_vertices(mesh: *const Mesh, out: *mut usize) -> i32;
-    pub fn profsubd_mesh_num_faces(mesh: *const Mesh, out: *mut usize) -> i32;
-    pub fn profsubd_mesh_get_positions(
-        mesh: *const Mesh,
-        out: *mut f64,
-        capacity: usize,
-        needed: *mut usize,
-    ) -> i32;
-    pub fn profsubd_evaluator_new(
-        mesh: *const Mesh,
-        options: *const Options,
-        out: *mut *mut Evaluator,
-    ) -> i32;
-    pub fn profsubd_evaluator_free(evaluator: *mut Evaluator);
-    pub fn profsubd_evaluator_num_parametric_faces(
-        evaluator: *const Evaluator,
-        out: *mut usize,
-    ) -> i32;
-    pub fn profsubd_evaluator_evaluate_points(
-        evaluator: *const Evaluator,
-        domain: i32,
-        strict: i32,
-        faces: *const u32,
-        u: *const f64,
-        v: *const f64,
-        n: usize,
-        positions: *mut f64,
-        du: *mut f64,
-        dv: *mut f64,
-        has_surface: *mut u8,
-    ) -> i32;
-    pub fn profsubd_refine_uniform(
-        mesh: *const Mesh,
-        options: *const Options,
-        level: u32,
-        out: *mut *mut Mesh,
-    ) -> i32;
-    pub fn profsubd_last_error_message() -> *const c_char;
-}
+pub use capi::*;
 
 /// The calling thread's last error message: never empty after a failed call.
 pub fn last_error() -> String {
@@ -87,9 +27,12 @@ pub fn last_error() -> String {
 }
 
 /// A status that is not OK must come with a message.
-pub fn check_error(status: i32, what: &str) {
-    if status != OK {
-        assert!(!last_error().is_empty(), "{what}: status {status} without a message");
+pub fn check_error(status: profsubd_status, what: &str) {
+    if status != PROFSUBD_OK {
+        assert!(
+            !last_error().is_empty(),
+            "{what}: status {status} without a message"
+        );
     }
 }
 
@@ -119,19 +62,19 @@ impl Bytes<'_> {
 /// (Catmull-Clark masks, crease rules included, are convex combinations), evaluation at
 /// points in the domain succeeds or marks the point as having no surface, and refinement
 /// keeps the refined points in the same box.
-pub fn check_mesh(mesh: *const Mesh, params: &mut Bytes) {
+pub fn check_mesh(mesh: *const profsubd_mesh, params: &mut Bytes) {
     let (lo, hi) = bounding_box(mesh);
     let slack = 1e-9 * (1.0 + (0..3).map(|k| (hi[k] - lo[k]).abs()).fold(0.0, f64::max));
     let inside = |p: &[f64]| (0..3).all(|k| p[k] >= lo[k] - slack && p[k] <= hi[k] + slack);
 
-    let mut evaluator: *mut Evaluator = std::ptr::null_mut();
+    let mut evaluator: *mut profsubd_evaluator = std::ptr::null_mut();
     let status = unsafe { profsubd_evaluator_new(mesh, std::ptr::null(), &mut evaluator) };
     check_error(status, "evaluator_new");
-    if status == OK {
+    if status == PROFSUBD_OK {
         let mut nfaces = 0usize;
         assert_eq!(
             unsafe { profsubd_evaluator_num_parametric_faces(evaluator, &mut nfaces) },
-            OK
+            PROFSUBD_OK
         );
         let n = 16usize;
         let faces: Vec<u32> = (0..n)
@@ -139,7 +82,12 @@ pub fn check_mesh(mesh: *const Mesh, params: &mut Bytes) {
             .collect();
         let u: Vec<f64> = (0..n).map(|_| params.unit()).collect();
         let v: Vec<f64> = (0..n).map(|_| params.unit()).collect();
-        let (mut p, mut du, mut dv, mut has) = (vec![0.0; 3 * n], vec![0.0; 3 * n], vec![0.0; 3 * n], vec![0u8; n]);
+        let (mut p, mut du, mut dv, mut has) = (
+            vec![0.0; 3 * n],
+            vec![0.0; 3 * n],
+            vec![0.0; 3 * n],
+            vec![0u8; n],
+        );
         let status = unsafe {
             profsubd_evaluator_evaluate_points(
                 evaluator,
@@ -156,7 +104,12 @@ pub fn check_mesh(mesh: *const Mesh, params: &mut Bytes) {
             )
         };
         check_error(status, "evaluate_points");
-        assert_eq!(status, OK, "in-domain points must evaluate: {}", last_error());
+        assert_eq!(
+            status,
+            PROFSUBD_OK,
+            "in-domain points must evaluate: {}",
+            last_error()
+        );
         for i in 0..n {
             let q = &p[3 * i..3 * i + 3];
             if has[i] == 1 {
@@ -168,32 +121,41 @@ pub fn check_mesh(mesh: *const Mesh, params: &mut Bytes) {
                     v[i]
                 );
             } else {
-                assert!(q.iter().all(|x| x.is_nan()), "a point without surface must be NaN");
+                assert!(
+                    q.iter().all(|x| x.is_nan()),
+                    "a point without surface must be NaN"
+                );
             }
         }
         unsafe { profsubd_evaluator_free(evaluator) };
     }
 
     let level = u32::from(params.u8() % 3);
-    let mut refined: *mut Mesh = std::ptr::null_mut();
+    let mut refined: *mut profsubd_mesh = std::ptr::null_mut();
     let status = unsafe { profsubd_refine_uniform(mesh, std::ptr::null(), level, &mut refined) };
     check_error(status, "refine_uniform");
-    if status == OK {
+    if status == PROFSUBD_OK {
         let (rlo, rhi) = bounding_box(refined);
-        assert!(inside(&rlo) && inside(&rhi), "refined points outside the control box");
+        assert!(
+            inside(&rlo) && inside(&rhi),
+            "refined points outside the control box"
+        );
         unsafe { profsubd_mesh_free(refined) };
     }
 }
 
 /// Bounding box of the mesh's control points (an empty box if it has none).
-pub fn bounding_box(mesh: *const Mesh) -> ([f64; 3], [f64; 3]) {
+pub fn bounding_box(mesh: *const profsubd_mesh) -> ([f64; 3], [f64; 3]) {
     let mut nv = 0usize;
-    assert_eq!(unsafe { profsubd_mesh_num_vertices(mesh, &mut nv) }, OK);
+    assert_eq!(
+        unsafe { profsubd_mesh_num_vertices(mesh, &mut nv) },
+        PROFSUBD_OK
+    );
     let mut pos = vec![0.0; 3 * nv];
     let mut needed = 0usize;
     assert_eq!(
         unsafe { profsubd_mesh_get_positions(mesh, pos.as_mut_ptr(), 3 * nv, &mut needed) },
-        OK
+        PROFSUBD_OK
     );
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test of profsubd: Rust (fmt, clippy, cargo test), the C++ conformance harness
 # against OpenSubdiv and OpenMesh (CMake + CTest), valgrind over the C API harness, and the
-# installed package consumed by the C example through find_package and pkg-config.
+# installed package consumed by the C example through find_package and pkg-config, a subset of
+# the C/C++ tests under AddressSanitizer + UBSan, and the examples' bytes under emulated CPUs.
 # Installs missing Debian packages when run as root (or with password-less sudo).
 #
 # Environment: PROFSUBD_OSD_SHAPES (OpenSubdiv shapes folder, default ../shared/conformance/osd_shapes),

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs every test of profsubd: Rust (fmt, clippy, cargo test), the C++ conformance harness
 # against OpenSubdiv and OpenMesh (CMake + CTest), valgrind over the C API harness, and the
-# installed package consumed by the C example through find_package and pkg-config.
+# installed package consumed by the C example through find_package and pkg-config, a subset of
+# the C/C++ tests under AddressSanitizer + UBSan, and the examples' bytes under emulated CPUs.
 # Installs missing Debian packages when run as root (or with password-less sudo).
 #
 # Environment: PROFSUBD_OSD_SHAPES (OpenSubdiv shapes folder, default ../shared/conformance/osd_shapes),
@@ -12,7 +13,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
 BUILD_DIR="${BUILD_DIR:-build}"
 JOBS="${JOBS:-$(nproc 2>/dev/null || echo 2)}"
-APT_PACKAGES=(cmake make g++ pkg-config libosd-dev libopenmesh-dev libclang-dev valgrind binutils python3-pip openscad)
+APT_PACKAGES=(cmake make g++ pkg-config libosd-dev libopenmesh-dev libclang-dev valgrind binutils python3-pip openscad qemu-user)
 START=$SECONDS
 passed=0
 failed=0
@@ -98,6 +99,23 @@ ctest_valgrind() {
     [ "${n:-0}" -gt 0 ] || { echo "no valgrind tests registered (is valgrind installed?)" >&2; return 1; }
     ctest --test-dir "$BUILD_DIR" -L valgrind --output-on-failure -j "$JOBS"
 }
+
+# AddressSanitizer + UBSan over a subset of the C/C++ tests (the C API's bad-input, topology,
+# sweep and 16-thread tests; the OpenSubdiv conformance tests are left to the plain and
+# valgrind runs, to keep the run short).
+ASAN_TESTS=(threads bad_input topology conformance_sweep)
+ctest_asan() {
+    cmake -S . -B "$BUILD_DIR-asan" -DCMAKE_BUILD_TYPE=Release -DPROFSUBD_SANITIZE=ON \
+        -DPROFSUBD_CARGO_EXTRA_ARGS=--tests
+    cmake --build "$BUILD_DIR-asan" -j "$JOBS" --target "${ASAN_TESTS[@]}"
+    local regex
+    regex="^($(IFS='|'; echo "${ASAN_TESTS[*]}"))\$"
+    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+        ctest --test-dir "$BUILD_DIR-asan" -R "$regex" --output-on-failure -j "$JOBS"
+}
+
+# The same bytes on every CPU: the examples under emulated CPUs without AVX/FMA.
+determinism() { scripts/check_determinism.sh; }
 
 PREFIX_ROOT="$(mktemp -d)"
 PREFIX="$PREFIX_ROOT/prefix"
@@ -185,6 +203,8 @@ step "cargo test --release" rust_test
 step "cmake configure + build ($BUILD_DIR)" cmake_build
 step "ctest (C++ harness vs OpenSubdiv and OpenMesh)" ctest_all
 step "valgrind --error-exitcode=1 over the C API harness" ctest_valgrind
+step "AddressSanitizer + UBSan: ${ASAN_TESTS[*]}" ctest_asan
+step "determinism: examples byte-identical under qemu64 / Haswell CPUs" determinism
 step "cmake --install into a temporary prefix" install_package
 step "C example via find_package(profsubd) (installed package)" example_find_package
 step "C example via pkg-config (installed package)" example_pkg_config

@@ -112,6 +112,7 @@ pub mod eval;
 pub mod ffi;
 pub(crate) mod fit;
 pub mod io;
+pub(crate) mod math;
 pub mod mesh;
 pub mod options;
 pub mod refine;

@@ -32,7 +32,7 @@ pub(crate) fn circle2(n: usize, r: f64) -> Vec<[f64; 2]> {
     (0..n)
         .map(|i| {
             let t = TAU * i as f64 / n as f64;
-            [r * t.cos(), r * t.sin()]
+            [r * crate::math::cos(t), r * crate::math::sin(t)]
         })
         .collect()
 }

@@ -3,6 +3,8 @@
 //! read back from the written OBJ, puts the limit of every control vertex on its data point
 //! (≤ 1e-10 × diagonal). Boundary *none* with an open boundary is refused, the options
 //! reach the fit through JSON, the CLI and the C API, and bad values are specific errors.
+// Reference geometry for tolerance checks: the platform's libm is fine here.
+#![allow(clippy::disallowed_methods)]
 
 // Only the CLI runner and the example paths are used here.
 #[allow(dead_code)]

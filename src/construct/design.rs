@@ -26,6 +26,7 @@
 //! where the lattice's two derivatives are nearly parallel, such as a flat cap's corner on a
 //! straight crease, where the limit's Jacobian vanishes, are left out of both).
 
+use crate::math;
 use std::f64::consts::TAU;
 use std::sync::OnceLock;
 
@@ -204,7 +205,7 @@ pub fn design_lattice(
                 Chart::Cap(end, c) => {
                     let q = bilinear(c, u, v);
                     let theta = if q.length() > 0.0 {
-                        q.y.atan2(q.x)
+                        math::atan2(q.y, q.x)
                     } else {
                         0.0
                     };
@@ -349,7 +350,11 @@ mod tests {
     struct Sphere;
     impl Design for Sphere {
         fn side(&self, s: f64, theta: f64) -> DVec3 {
-            DVec3::new(s.cos() * theta.cos(), s.cos() * theta.sin(), s.sin())
+            DVec3::new(
+                math::cos(s) * math::cos(theta),
+                math::cos(s) * math::sin(theta),
+                math::sin(s),
+            )
         }
         fn angle(&self, theta: f64) -> f64 {
             theta
@@ -413,10 +418,14 @@ mod tests {
             .map(|k| {
                 let (u, v) = lattice_uv(k);
                 let (lat, lon) = (0.2 * u - 0.1, 0.2 * v);
-                DVec3::new(lat.cos() * lon.cos(), lat.cos() * lon.sin(), lat.sin()) * r
+                DVec3::new(
+                    math::cos(lat) * math::cos(lon),
+                    math::cos(lat) * math::sin(lon),
+                    math::sin(lat),
+                ) * r
             })
             .collect();
-        let area = r * r * 0.2 * 2.0 * 0.1f64.sin();
+        let area = r * r * 0.2 * 2.0 * math::sin(0.1f64);
         let e = bending_energy(&p, &lattice_normals(&p));
         assert!((e / (2.0 * area / (r * r)) - 1.0).abs() < 0.02, "{e}");
         let flat: Vec<DVec3> = p.iter().map(|q| DVec3::new(q.y, q.z, 0.0)).collect();

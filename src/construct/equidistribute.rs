@@ -15,6 +15,7 @@
 //! replace several rings, so the mesh stays quasi-uniform there (rings graded to `O(h²)` next
 //! to a pole made the interpolating fit fold; see the README, "Valid surfaces").
 
+use crate::math;
 use glam::DVec2;
 
 use crate::curves::CurveSample;
@@ -156,7 +157,7 @@ fn add_density(p: &[DVec2], cost: &mut [f64]) {
     for m in 1..n - 1 {
         let (a, b) = (p[m] - p[m - 1], p[m + 1] - p[m]);
         if a.length() > 0.0 && b.length() > 0.0 {
-            turn[m] = a.perp_dot(b).atan2(a.dot(b)).abs();
+            turn[m] = math::atan2(a.perp_dot(b), a.dot(b)).abs();
         }
     }
     if n > 2 {
@@ -171,7 +172,7 @@ fn add_density(p: &[DVec2], cost: &mut [f64]) {
         *c += ds[m];
         if turning > 1e-12 && ds[m] > 0.0 {
             let ratio = tau[m] / ds[m] * length / turning;
-            *c += ds[m] * ratio.powf(CURVATURE_EXPONENT);
+            *c += ds[m] * math::powf(ratio, CURVATURE_EXPONENT);
         }
     }
 }
@@ -186,7 +187,7 @@ mod tests {
         (0..=PROBES)
             .map(|m| {
                 let a = a0 + (a1 - a0) * m as f64 / PROBES as f64;
-                DVec2::new(r * a.cos(), r * a.sin())
+                DVec2::new(r * math::cos(a), r * math::sin(a))
             })
             .collect()
     }
@@ -213,7 +214,7 @@ mod tests {
         let p: Vec<DVec2> = (0..=PROBES)
             .map(|m| {
                 let a = std::f64::consts::FRAC_PI_2 * m as f64 / PROBES as f64;
-                DVec2::new(3.0 * a.cos(), 0.5 * a.sin())
+                DVec2::new(3.0 * math::cos(a), 0.5 * math::sin(a))
             })
             .collect();
         let arc_to = |u: f64| -> f64 {
@@ -275,7 +276,7 @@ mod tests {
         let bend = |s: f64| {
             if s <= 8.0 {
                 let a = s / 8.0 * std::f64::consts::FRAC_PI_2;
-                DVec2::new(a.cos(), a.sin())
+                DVec2::new(math::cos(a), math::sin(a))
             } else {
                 DVec2::new(-(s - 8.0), 1.0)
             }

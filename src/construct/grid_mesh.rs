@@ -193,7 +193,14 @@ mod tests {
         let pts: Vec<[f64; 2]> = (0..=12)
             .map(|i| {
                 let t = -TAU / 4.0 + TAU / 2.0 * i as f64 / 12.0;
-                [if i == 0 || i == 12 { 0.0 } else { t.cos() }, t.sin()]
+                [
+                    if i == 0 || i == 12 {
+                        0.0
+                    } else {
+                        crate::math::cos(t)
+                    },
+                    crate::math::sin(t),
+                ]
             })
             .collect();
         let m = revolve_mesh(&RevolveInput::new(pts));
@@ -248,7 +255,11 @@ mod tests {
         let loop3: Vec<[f64; 3]> = (0..24)
             .map(|i| {
                 let t = TAU * i as f64 / 24.0;
-                [3.0 * t.cos(), 3.0 * t.sin(), 0.3 * (2.0 * t).sin()]
+                [
+                    3.0 * crate::math::cos(t),
+                    3.0 * crate::math::sin(t),
+                    0.3 * crate::math::sin(2.0 * t),
+                ]
             })
             .collect();
         let mut input = SweepInput::new(sq.clone(), loop3);

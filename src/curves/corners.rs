@@ -17,6 +17,7 @@
 //!   circle, so a regular hexagon's middle vertices turn by about 22° there instead of 60°
 //!   (see the test `the_two_detectors_answer_different_questions`).
 
+use crate::math;
 use glam::{DVec2, DVec3};
 
 /// Unit tangent leaving point `i` towards increasing index (`forward`) or arriving from
@@ -82,7 +83,7 @@ pub fn turning_angle(points: &[DVec2], i: usize) -> f64 {
         .flat_map(|a| {
             leaving
                 .iter()
-                .map(move |b| a.dot(*b).clamp(-1.0, 1.0).acos())
+                .map(move |b| math::acos(a.dot(*b).clamp(-1.0, 1.0)))
         })
         .fold(f64::INFINITY, f64::min)
 }
@@ -102,7 +103,7 @@ pub fn chord_turning_angle(points: &[DVec3], closed: bool, i: usize) -> f64 {
     }
     let a = (points[i] - points[(i + n - 1) % n]).normalize();
     let b = (points[(i + 1) % n] - points[i]).normalize();
-    a.cross(b).length().atan2(a.dot(b))
+    math::atan2(a.cross(b).length(), a.dot(b))
 }
 
 /// Points whose chord turning angle exceeds `sharp_angle` (radians): interior points of an
@@ -123,7 +124,7 @@ mod tests {
         let hexagon: Vec<DVec2> = (0..=6)
             .map(|k| {
                 let a = std::f64::consts::PI * k as f64 / 3.0;
-                DVec2::new(a.cos(), a.sin())
+                DVec2::new(math::cos(a), math::sin(a))
             })
             .collect();
         let lifted: Vec<DVec3> = hexagon.iter().map(|p| p.extend(0.0)).collect();
@@ -156,7 +157,7 @@ mod tests {
         let circle: Vec<DVec2> = (0..=16)
             .map(|i| {
                 let a = std::f64::consts::PI * (i as f64 / 16.0 - 0.5);
-                DVec2::new(a.cos(), a.sin())
+                DVec2::new(math::cos(a), math::sin(a))
             })
             .collect();
         assert!(detect_corners(&circle, 10f64.to_radians()).is_empty());

@@ -501,13 +501,14 @@ fn solve_tridiagonal(rows: &[([f64; 3], DVec3)]) -> Vec<DVec3> {
 mod tests {
     use super::*;
     use crate::curves::corners::detect_chord_corners;
+    use crate::math;
     use std::f64::consts::TAU;
 
     fn circle(n: usize, r: f64) -> Vec<DVec3> {
         (0..n)
             .map(|i| {
                 let t = TAU * i as f64 / n as f64;
-                DVec3::new(r * t.cos(), r * t.sin(), 0.0)
+                DVec3::new(r * math::cos(t), r * math::sin(t), 0.0)
             })
             .collect()
     }

@@ -74,6 +74,7 @@ impl PlanarCurve {
 mod tests {
     use super::*;
     use crate::error::Error;
+    use crate::math;
 
     #[test]
     fn spline_reproduces_a_cubic_with_its_end_tangents() {
@@ -97,7 +98,7 @@ mod tests {
     #[test]
     fn spline_interpolates_and_is_c2_inside_runs_and_c0_at_breaks() {
         let pts: Vec<DVec2> = (0..7)
-            .map(|i| DVec2::new((i as f64 * 0.5).sin() + i as f64, (i * i) as f64 * 0.1))
+            .map(|i| DVec2::new(math::sin(i as f64 * 0.5) + i as f64, (i * i) as f64 * 0.1))
             .collect();
         let c = PlanarCurve::new(&pts, Interpolation::Spline, &[3], Default::default()).unwrap();
         for (i, p) in pts.iter().enumerate() {

@@ -1,5 +1,6 @@
 //! Tests of [`super::evaluator`] against analytic surfaces.
 
+use crate::math;
 use glam::DVec3;
 
 use crate::eval::bspline::BicubicPatch;
@@ -32,7 +33,7 @@ pub(crate) fn grid(n: usize, height: impl Fn(f64, f64) -> f64) -> MeshParts {
 }
 
 fn bumpy(x: f64, y: f64) -> f64 {
-    (0.7 * x).sin() * (0.4 * y + 0.3).cos() + 0.05 * x * y
+    math::sin(0.7 * x) * math::cos(0.4 * y + 0.3) + 0.05 * x * y
 }
 
 #[test]
@@ -112,7 +113,13 @@ fn derivatives_match_finite_differences() {
 fn infinitely_sharp_crease_splits_the_grid_into_two_boundary_patches() {
     // A crease along x = 2 makes both sides boundary patches: the crease curve is the
     // B-spline of the crease vertices alone, whatever the heights beside it.
-    let mut parts = grid(4, |x, y| if x == 2.0 { 0.1 * y * y } else { (x * y).sin() });
+    let mut parts = grid(4, |x, y| {
+        if x == 2.0 {
+            0.1 * y * y
+        } else {
+            math::sin(x * y)
+        }
+    });
     for j in 0..4u32 {
         parts.creases.push(Crease {
             vertices: [j * 5 + 2, (j + 1) * 5 + 2],

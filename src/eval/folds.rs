@@ -45,6 +45,7 @@
 //! on a tight bend) is reported; the check is meant for meshes fine enough that the normal of
 //! a fold-free face stays within 90° of its mean.
 
+use crate::math;
 use std::collections::HashMap;
 
 use glam::DVec3;
@@ -394,7 +395,7 @@ impl<'a> FaceCheck<'a> {
             shape,
             m: (n - 1) * step,
             max_depth: s.adaptive_depth as u32,
-            refine_cos: s.refine_turn_deg.to_radians().cos(),
+            refine_cos: math::cos(s.refine_turn_deg.to_radians()),
             cache: HashMap::new(),
             reference: DVec3::ZERO,
             typical: 0.0,
@@ -504,7 +505,7 @@ impl<'a> FaceCheck<'a> {
             return;
         }
         let cos = s.unit.dot(self.reference);
-        let angle = cos.clamp(-1.0, 1.0).acos().to_degrees();
+        let angle = math::acos(cos.clamp(-1.0, 1.0)).to_degrees();
         if cos < 0.0 {
             self.reversed += 1;
         }
@@ -552,7 +553,7 @@ impl<'a> FaceCheck<'a> {
                 .is_some_and(|k| !self.shape.corners[k].exact)
         });
         if !at_cone && !bend {
-            let turn = min_cos.clamp(-1.0, 1.0).acos().to_degrees();
+            let turn = math::acos(min_cos.clamp(-1.0, 1.0)).to_degrees();
             self.max_turn = self.max_turn.max(turn);
         }
         Ok(())

@@ -7,6 +7,7 @@
 //! vertex's ring: the one-ring of a vertex is closed under refinement, so its limit follows
 //! from the ring alone once the sharpness around it is 0 or infinite.
 
+use crate::math;
 use std::f64::consts::PI;
 
 use crate::catmark::crease::{
@@ -293,10 +294,14 @@ impl Ring {
         }
         let theta = 2.0 * PI / n as f64;
         let lambda = 5.0 / 16.0
-            + (theta.cos() + (0.5 * theta).cos() * (2.0 * (9.0 + theta.cos())).sqrt()) / 16.0;
+            + (math::cos(theta) + math::cos(0.5 * theta) * (2.0 * (9.0 + math::cos(theta))).sqrt())
+                / 16.0;
         let fscale = 1.0 / (4.0 * lambda - 1.0);
         for k in 0..n {
-            let (c0, c1) = ((k as f64 * theta).cos(), ((k + 1) as f64 * theta).cos());
+            let (c0, c1) = (
+                math::cos(k as f64 * theta),
+                math::cos((k + 1) as f64 * theta),
+            );
             axpy(&mut t, 4.0 * c0 / 12.0, &self.ends[(i + k) % n]);
             axpy(
                 &mut t,
@@ -347,7 +352,7 @@ impl Ring {
             _ => {
                 let kf = k as f64;
                 let theta = PI / kf;
-                let (c, s) = (theta.cos(), theta.sin());
+                let (c, s) = (math::cos(theta), math::sin(theta));
                 let denom = 1.0 / (kf * (3.0 + c));
                 let r = (c + 1.0) / s;
                 axpy(&mut across, 4.0 * r * (c - 1.0) * denom, &self.center);
@@ -355,7 +360,10 @@ impl Ring {
                 axpy(&mut across, -r * (1.0 + 2.0 * c) * denom, &self.ends[b]);
                 axpy(&mut across, s * denom, opp(0));
                 for i in 1..k {
-                    let (si, si1) = ((i as f64 * theta).sin(), ((i + 1) as f64 * theta).sin());
+                    let (si, si1) = (
+                        math::sin(i as f64 * theta),
+                        math::sin((i + 1) as f64 * theta),
+                    );
                     axpy(&mut across, 4.0 * si * denom, &self.ends[(a + i) % n]);
                     axpy(&mut across, (si + si1) * denom, opp(i));
                 }
@@ -370,8 +378,8 @@ impl Ring {
                 across.clone()
             } else {
                 let phi = PI * p as f64 / k as f64;
-                let mut t = scaled(phi.cos(), &along);
-                axpy(&mut t, phi.sin(), &across);
+                let mut t = scaled(math::cos(phi), &along);
+                axpy(&mut t, math::sin(phi), &across);
                 t
             }
         };

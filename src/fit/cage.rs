@@ -119,6 +119,7 @@ pub fn check_limit_exists(mesh: &Mesh, options: &SubdivOptions) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math;
 
     /// A wavy `n × n` grid of quads; `holes` tagged.
     fn grid(n: u32, holes: Vec<u32>) -> MeshParts {
@@ -126,7 +127,7 @@ mod tests {
         let mut parts = MeshParts {
             positions: (0..=n)
                 .flat_map(|i| (0..=n).map(move |j| (i, j)))
-                .map(|(i, j)| DVec3::new(i as f64, j as f64, ((i * j) as f64 * 0.7).sin()))
+                .map(|(i, j)| DVec3::new(i as f64, j as f64, math::sin((i * j) as f64 * 0.7)))
                 .collect(),
             holes,
             ..Default::default()

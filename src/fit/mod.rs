@@ -4,10 +4,13 @@
 //! points (its limit stencil row, which depends only on topology and sharpness), so asking
 //! each vertex's limit to equal its data point is the square sparse system `A X = D`, with
 //! `A` the limit stencil matrix (non-symmetric, well conditioned on meshes of mostly regular
-//! vertices). It is solved with `faer`: first by BiCGSTAB with a Jacobi preconditioner (a
-//! few dozen sparse products), and if that does not reach the tolerance, by sparse LU with
-//! partial pivoting followed by iterative refinement. The achieved residual is measured on
-//! the stencil rows themselves and reported.
+//! vertices). It is solved first by BiCGSTAB with a Jacobi preconditioner (a few dozen sparse
+//! products), and if that does not reach the tolerance, by dense LU with partial pivoting
+//! followed by iterative refinement (small systems only). The achieved residual is measured
+//! on the stencil rows themselves and reported. Both solvers are plain scalar loops in a
+//! fixed order, so a fit gives the same bits on every CPU: a library with runtime-dispatched
+//! SIMD kernels (faer's, through pulp, which this module used before) rounds differently on
+//! machines with and without AVX2/FMA.
 //!
 //! [`cage`]: the constructions' shared entry point, which tags a cage with its subdivision
 //! options and fits it under them.
@@ -16,12 +19,6 @@ pub mod cage;
 
 pub use cage::{fit_cage, FitOptions, FittedCage};
 
-use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::linalg::solvers::Solve;
-use faer::matrix_free::bicgstab::{bicgstab, bicgstab_scratch, BicgParams};
-use faer::matrix_free::IdentityPrecond;
-use faer::sparse::{SparseColMat, Triplet};
-use faer::{Col, Mat, Par};
 use glam::DVec3;
 
 use crate::error::{Error, Result};
@@ -63,8 +60,9 @@ pub struct FitReport {
 pub enum SolveMethod {
     /// Preconditioned BiCGSTAB reached the tolerance.
     BiCgStab,
-    /// Sparse LU with iterative refinement (after BiCGSTAB did not converge).
-    SparseLu,
+    /// Dense LU with partial pivoting and iterative refinement (after BiCGSTAB did not
+    /// converge, on systems of at most [`DENSE_LU_MAX_ROWS`] rows).
+    DenseLu,
 }
 
 /// BiCGSTAB stops at this fraction of the tolerance.
@@ -125,23 +123,20 @@ pub fn residual(a: CsrRef<'_>, x: &[DVec3], d: &[DVec3]) -> f64 {
 
 /// Solve `A X = D` to a residual `≤ tolerance` (largest point distance).
 ///
+/// The result is a deterministic function of the input on every machine: both solvers are
+/// plain scalar loops in a fixed order (no runtime-dispatched SIMD, no parallel reduction, no
+/// fused multiply-add), so the same bits come out on any x86_64 or aarch64 CPU.
+///
 /// Errors: [`Error::InvalidArgument`] for a malformed matrix or mismatched sizes;
-/// [`Error::NumericalFailure`] if `A` is singular or the residual stays above the tolerance.
+/// [`Error::NumericalFailure`] if `A` is singular, if BiCGSTAB does not converge on a system
+/// larger than [`DENSE_LU_MAX_ROWS`], or if the residual stays above the tolerance.
 pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, FitReport)> {
     let n = d.len();
     a.check(n)?;
     if n == 0 {
         return Err(Error::invalid_argument("nothing to fit: no data points"));
     }
-    let mut triplets = Vec::with_capacity(a.indices.len());
-    for i in 0..n {
-        for k in a.offsets[i] as usize..a.offsets[i + 1] as usize {
-            triplets.push(Triplet::new(i as u32, a.indices[k], a.weights[k]));
-        }
-    }
-    let matrix = SparseColMat::<u32, f64>::try_new_from_triplets(n, n, &triplets)
-        .map_err(|e| Error::NumericalFailure(format!("building the sparse matrix: {e:?}")))?;
-    if let Some((x, iterations)) = krylov(&matrix, a, d, tolerance) {
+    if let Some((x, iterations)) = krylov(a, d, tolerance) {
         let r = residual(a, &x, d);
         if r <= tolerance {
             let method = SolveMethod::BiCgStab;
@@ -156,23 +151,22 @@ pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, 
             ));
         }
     }
-    let lu = matrix.sp_lu().map_err(|e| {
-        Error::NumericalFailure(format!("the limit stencil matrix is singular: {e:?}"))
+    if n > DENSE_LU_MAX_ROWS {
+        return Err(Error::NumericalFailure(format!(
+            "BiCGSTAB did not reach the tolerance on the {n} × {n} limit stencil system, and \
+             the dense LU fallback is limited to {DENSE_LU_MAX_ROWS} rows"
+        )));
+    }
+    let lu = DenseLu::factor(a).ok_or_else(|| {
+        Error::NumericalFailure("the limit stencil matrix is singular".to_string())
     })?;
-    let solve_points = |rhs: &[DVec3]| -> Vec<DVec3> {
-        let mut m = Mat::<f64>::from_fn(n, 3, |i, j| rhs[i][j]);
-        lu.solve_in_place(m.as_mut());
-        (0..n)
-            .map(|i| DVec3::new(m[(i, 0)], m[(i, 1)], m[(i, 2)]))
-            .collect()
-    };
-    let mut x = solve_points(d);
+    let mut x = lu.solve(d);
     let mut r = residual(a, &x, d);
     let mut refinements = 0;
     while r > tolerance && refinements < MAX_REFINEMENTS && r.is_finite() {
         let ax = a.apply(&x);
         let rhs: Vec<DVec3> = d.iter().zip(&ax).map(|(d, ax)| *d - *ax).collect();
-        let dx = solve_points(&rhs);
+        let dx = lu.solve(&rhs);
         let candidate: Vec<DVec3> = x.iter().zip(&dx).map(|(x, dx)| *x + *dx).collect();
         let rc = residual(a, &candidate, d);
         refinements += 1;
@@ -192,20 +186,42 @@ pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, 
         FitReport {
             residual: r,
             tolerance,
-            method: SolveMethod::SparseLu,
+            method: SolveMethod::DenseLu,
             iterations: refinements,
         },
     ))
 }
 
-/// BiCGSTAB on the three coordinate columns at once, right-preconditioned by the inverse
-/// diagonal; `None` if it does not converge (or a diagonal entry vanishes).
-fn krylov(
-    matrix: &SparseColMat<u32, f64>,
-    a: CsrRef<'_>,
-    d: &[DVec3],
-    tolerance: f64,
-) -> Option<(Vec<DVec3>, usize)> {
+/// Largest system the dense LU fallback factors (2048² doubles = 32 MiB).
+pub const DENSE_LU_MAX_ROWS: usize = 2048;
+
+/// `A x` for one coordinate column, rows summed in stored order.
+fn apply_scalar(a: CsrRef<'_>, x: &[f64], out: &mut [f64]) {
+    for (i, o) in out.iter_mut().enumerate() {
+        let (s, e) = (a.offsets[i] as usize, a.offsets[i + 1] as usize);
+        let mut sum = 0.0;
+        for k in s..e {
+            sum += a.weights[k] * x[a.indices[k] as usize];
+        }
+        *o = sum;
+    }
+}
+
+/// Sequential dot product (a fixed summation order, unlike a SIMD reduction).
+fn dot(u: &[f64], v: &[f64]) -> f64 {
+    let mut sum = 0.0;
+    for (a, b) in u.iter().zip(v) {
+        sum += a * b;
+    }
+    sum
+}
+
+/// BiCGSTAB on each coordinate column, right-preconditioned by the inverse diagonal, from a
+/// zero start; `None` if it does not converge (or a diagonal entry vanishes, or it breaks
+/// down). Each coordinate stops when its residual's Euclidean norm, which bounds its rows'
+/// residuals, is below a margin of the tolerance (a few more iterations, so that the fit has
+/// margin for other evaluators).
+fn krylov(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Option<(Vec<DVec3>, usize)> {
     let n = d.len();
     let mut diag = vec![0.0; n];
     for (i, di) in diag.iter_mut().enumerate() {
@@ -218,40 +234,161 @@ fn krylov(
     if diag.iter().any(|&x| x.abs() < 1e-12) {
         return None;
     }
-    let jacobi = Col::<f64>::from_fn(n, |i| 1.0 / diag[i]).into_diagonal();
-    let identity = IdentityPrecond { dim: n };
-    let mut mem = MemBuffer::new(bicgstab_scratch(&identity, &jacobi, matrix, 1, Par::Seq));
-    // The zero start is passed as a guess (`MaybeNonZero`, the default): faer 0.24 leaves
-    // the residual unset with `InitialGuessStatus::Zero`. Each coordinate's residual norm
-    // bounds its rows' residuals; aim well below the tolerance (a few more iterations) so
-    // that the fit has margin for other evaluators.
-    let params = BicgParams::<f64> {
-        abs_tolerance: KRYLOV_MARGIN * tolerance,
-        rel_tolerance: 0.0,
-        max_iters: MAX_KRYLOV_ITERATIONS,
-        ..Default::default()
-    };
-    let mut out = Mat::<f64>::zeros(n, 3);
+    let inv_diag: Vec<f64> = diag.iter().map(|d| 1.0 / d).collect();
+    let stop = KRYLOV_MARGIN * tolerance;
+    let mut out = vec![DVec3::ZERO; n];
     let mut iterations = 0;
     for j in [0usize, 1, 2] {
-        let rhs = Mat::<f64>::from_fn(n, 1, |i, _| d[i][j]);
-        let info = bicgstab(
-            out.as_mut().subcols_mut(j, 1),
-            &identity,
-            &jacobi,
-            matrix,
-            rhs.as_ref(),
-            params,
-            |_| {},
-            Par::Seq,
-            MemStack::new(&mut mem),
-        );
-        iterations = iterations.max(info.ok()?.iter_count);
+        let b: Vec<f64> = d.iter().map(|p| p[j]).collect();
+        let (x, its) = bicgstab_column(a, &inv_diag, &b, stop)?;
+        iterations = iterations.max(its);
+        for (o, x) in out.iter_mut().zip(x) {
+            o[j] = x;
+        }
     }
-    let x = (0..n)
-        .map(|i| DVec3::new(out[(i, 0)], out[(i, 1)], out[(i, 2)]))
-        .collect();
-    Some((x, iterations))
+    Some((out, iterations))
+}
+
+/// One column of [`krylov`]: `x` with `‖b − A x‖₂ < stop`, and the iteration count.
+fn bicgstab_column(
+    a: CsrRef<'_>,
+    inv_diag: &[f64],
+    b: &[f64],
+    stop: f64,
+) -> Option<(Vec<f64>, usize)> {
+    let n = b.len();
+    let mut x = vec![0.0; n];
+    let mut r = b.to_vec();
+    if dot(&r, &r).sqrt() < stop {
+        return Some((x, 0));
+    }
+    let r_hat = r.clone();
+    let (mut rho, mut alpha, mut omega) = (1.0, 1.0, 1.0);
+    let (mut p, mut v) = (vec![0.0; n], vec![0.0; n]);
+    let (mut y, mut z, mut s, mut t) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    for it in 1..=MAX_KRYLOV_ITERATIONS {
+        let rho_next = dot(&r_hat, &r);
+        if rho_next == 0.0 || !rho_next.is_finite() {
+            return None;
+        }
+        let beta = (rho_next / rho) * (alpha / omega);
+        rho = rho_next;
+        for i in 0..n {
+            p[i] = r[i] + beta * (p[i] - omega * v[i]);
+            y[i] = inv_diag[i] * p[i];
+        }
+        apply_scalar(a, &y, &mut v);
+        let rv = dot(&r_hat, &v);
+        if rv == 0.0 || !rv.is_finite() {
+            return None;
+        }
+        alpha = rho / rv;
+        for i in 0..n {
+            x[i] += alpha * y[i];
+            s[i] = r[i] - alpha * v[i];
+        }
+        if dot(&s, &s).sqrt() < stop {
+            return Some((x, it));
+        }
+        for i in 0..n {
+            z[i] = inv_diag[i] * s[i];
+        }
+        apply_scalar(a, &z, &mut t);
+        let tt = dot(&t, &t);
+        if tt == 0.0 || !tt.is_finite() {
+            return None;
+        }
+        omega = dot(&t, &s) / tt;
+        if omega == 0.0 {
+            return None;
+        }
+        for i in 0..n {
+            x[i] += omega * z[i];
+            r[i] = s[i] - omega * t[i];
+        }
+        if dot(&r, &r).sqrt() < stop {
+            return Some((x, it));
+        }
+    }
+    None
+}
+
+/// LU factors with partial pivoting of a small dense copy of `A` (row-major), for systems
+/// BiCGSTAB does not solve: scalar loops in a fixed order, like [`krylov`].
+struct DenseLu {
+    n: usize,
+    /// `L` below the diagonal (unit diagonal implied) and `U` on and above it.
+    lu: Vec<f64>,
+    /// Row `k` of the factors is row `perm[k]` of `A`.
+    perm: Vec<usize>,
+}
+
+impl DenseLu {
+    /// `None` if a pivot column is exactly zero (a singular matrix).
+    fn factor(a: CsrRef<'_>) -> Option<Self> {
+        let n = a.rows();
+        let mut lu = vec![0.0; n * n];
+        for i in 0..n {
+            for k in a.offsets[i] as usize..a.offsets[i + 1] as usize {
+                lu[i * n + a.indices[k] as usize] += a.weights[k];
+            }
+        }
+        let mut perm: Vec<usize> = (0..n).collect();
+        for k in 0..n {
+            // The first row of largest magnitude: ties broken by position, deterministically.
+            let mut best = k;
+            for i in k + 1..n {
+                if lu[i * n + k].abs() > lu[best * n + k].abs() {
+                    best = i;
+                }
+            }
+            let pivot = lu[best * n + k];
+            if pivot == 0.0 || !pivot.is_finite() {
+                return None;
+            }
+            if best != k {
+                for j in 0..n {
+                    lu.swap(k * n + j, best * n + j);
+                }
+                perm.swap(k, best);
+            }
+            let (upper, lower) = lu.split_at_mut((k + 1) * n);
+            let row_k = &upper[k * n..];
+            for row in lower.chunks_exact_mut(n) {
+                let l = row[k] / pivot;
+                row[k] = l;
+                if l != 0.0 {
+                    for j in k + 1..n {
+                        row[j] -= l * row_k[j];
+                    }
+                }
+            }
+        }
+        Some(DenseLu { n, lu, perm })
+    }
+
+    /// `A⁻¹ rhs` for points.
+    fn solve(&self, rhs: &[DVec3]) -> Vec<DVec3> {
+        let n = self.n;
+        let mut x: Vec<DVec3> = self.perm.iter().map(|&i| rhs[i]).collect();
+        for i in 0..n {
+            let row = &self.lu[i * n..i * n + i];
+            let mut sum = x[i];
+            for (xj, l) in x[..i].iter().zip(row) {
+                sum -= *xj * *l;
+            }
+            x[i] = sum;
+        }
+        for i in (0..n).rev() {
+            let row = &self.lu[i * n + i + 1..(i + 1) * n];
+            let mut sum = x[i];
+            for (xj, u) in x[i + 1..].iter().zip(row) {
+                sum -= *xj * *u;
+            }
+            x[i] = sum / self.lu[i * n + i];
+        }
+        x
+    }
 }
 
 impl<'a> From<&'a StencilTable> for CsrRef<'a> {
@@ -299,6 +436,7 @@ pub fn fit_limit(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math;
 
     /// The limit mask of a closed ring of cubic B-spline points (1/6, 4/6, 1/6), plus one
     /// identity row: non-trivial, well conditioned, with a known answer.
@@ -330,7 +468,7 @@ mod tests {
         let truth: Vec<DVec3> = (0..n)
             .map(|i| {
                 let t = i as f64 * 0.3;
-                DVec3::new(t.cos(), t.sin(), t * t)
+                DVec3::new(math::cos(t), math::sin(t), t * t)
             })
             .collect();
         let d = a.apply(&truth);
@@ -343,7 +481,7 @@ mod tests {
     }
 
     #[test]
-    fn falls_back_to_lu_when_the_diagonal_vanishes() {
+    fn falls_back_to_dense_lu_when_the_diagonal_vanishes() {
         // A permutation with a scaled row: no usable Jacobi preconditioner.
         let offsets = [0u32, 1, 2, 3];
         let indices = [1u32, 2, 0];
@@ -355,8 +493,26 @@ mod tests {
         };
         let d = [DVec3::X, DVec3::Y, DVec3::Z];
         let (x, report) = solve(a, &d, 1e-14).unwrap();
-        assert_eq!(report.method, SolveMethod::SparseLu);
+        assert_eq!(report.method, SolveMethod::DenseLu);
         assert_eq!(x, vec![DVec3::Z * 2.0, DVec3::X, DVec3::Y * 0.5]);
+    }
+
+    #[test]
+    fn refuses_the_dense_fallback_above_its_size_limit() {
+        // A cyclic shift: zero diagonal (no Jacobi preconditioner), one row too many for LU.
+        let n = DENSE_LU_MAX_ROWS + 1;
+        let offsets: Vec<u32> = (0..=n as u32).collect();
+        let indices: Vec<u32> = (0..n as u32).map(|i| (i + 1) % n as u32).collect();
+        let weights = vec![1.0; n];
+        let a = CsrRef {
+            offsets: &offsets,
+            indices: &indices,
+            weights: &weights,
+        };
+        match solve(a, &vec![DVec3::ONE; n], 1e-10) {
+            Err(Error::NumericalFailure(m)) => assert!(m.contains("limited to 2048 rows"), "{m}"),
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]

@@ -63,11 +63,28 @@ pub struct ObjRead {
     pub warnings: Vec<String>,
 }
 
+/// Largest OBJ file [`read_obj_file`] reads (1 GiB, about 20 million vertices and faces): a
+/// larger file is refused before any of it is read.
+pub const MAX_OBJ_BYTES: u64 = 1 << 30;
+
 /// Read and parse the OBJ file at `path`; see the [module documentation](self).
 ///
 /// Errors: [`Error::Io`] if the file cannot be read, [`Error::Parse`] for a
-/// malformed file, [`Error::InvalidMesh`] for a mesh OpenSubdiv could not take.
+/// malformed file or one above [`MAX_OBJ_BYTES`], [`Error::InvalidMesh`] for a mesh OpenSubdiv could not take.
 pub fn read_obj_file(path: &Path) -> Result<ObjRead> {
+    // Refuse an absurd file before reading it into memory.
+    if let Ok(meta) = std::fs::metadata(path) {
+        if meta.len() > MAX_OBJ_BYTES {
+            return Err(Error::Parse {
+                path: path.to_path_buf(),
+                line: 0,
+                message: format!(
+                    "the file is {} bytes, above the OBJ reader's limit of {MAX_OBJ_BYTES} bytes",
+                    meta.len()
+                ),
+            });
+        }
+    }
     let bytes = std::fs::read(path).map_err(|e| Error::Io {
         path: path.to_path_buf(),
         message: e.to_string(),

@@ -26,7 +26,7 @@ fn prism() -> Mesh {
     for z in [0.0, 1.0] {
         for k in 0..3 {
             let a = k as f64 * std::f64::consts::TAU / 3.0;
-            positions.push(DVec3::new(a.cos(), a.sin(), z));
+            positions.push(DVec3::new(crate::math::cos(a), crate::math::sin(a), z));
         }
     }
     Mesh::from_parts(MeshParts {

@@ -1,4 +1,6 @@
 //! Sampled circular arcs for tests: `mod arc;` via `#[path = "support/arc.rs"]`.
+// Reference geometry for tolerance checks: the platform's libm is fine here.
+#![allow(clippy::disallowed_methods)]
 
 /// `n + 1` points of the circle of radius `r` about the origin, from angle `from` to `to`.
 pub fn arc(n: usize, r: f64, from: f64, to: f64) -> Vec<[f64; 2]> {

@@ -10,6 +10,7 @@
 //!   and 4),
 //! - `z = zᵢ + (q − (i − 1)) (zᵢ₊₁ − zᵢ)` (heights blended linearly across the quadrant).
 
+use crate::math;
 use std::f64::consts::{FRAC_PI_2, PI};
 
 use glam::{DVec2, DVec3};
@@ -28,7 +29,7 @@ pub fn axis(c: &[DVec2; 4]) -> DVec3 {
 pub fn surface(theta: f64, c: &[DVec2; 4]) -> DVec3 {
     let a = axis(c);
     let theta = theta.rem_euclid(2.0 * PI);
-    let (sin, cos) = theta.sin_cos();
+    let (sin, cos) = math::sin_cos(theta);
     let q = theta / FRAC_PI_2;
     let (c1, c2, c3, c4) = (c[0], c[1], c[2], c[3]);
     if theta < FRAC_PI_2 {

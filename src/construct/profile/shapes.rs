@@ -1,6 +1,7 @@
 //! Silhouettes of analytic shapes, for tests, benchmarks and demonstrations.
 
 use super::input::ProfileInput;
+use crate::math;
 
 /// Silhouettes of the ellipsoid x²/a² + y²/b² + z²/c² = 1 centred at the origin, `m + 1`
 /// points per curve (uniform in the polar angle), other settings at their defaults.
@@ -9,7 +10,7 @@ pub fn ellipsoid(a: f64, b: f64, c: f64, m: usize) -> ProfileInput {
         (0..=m)
             .map(|i| {
                 let phi = std::f64::consts::PI * i as f64 / m as f64;
-                [r * phi.sin(), -c * phi.cos()]
+                [r * math::sin(phi), -c * math::cos(phi)]
             })
             .collect()
     };

@@ -8,6 +8,7 @@
 //! each spline is clamped perpendicular to the axis, so the surface has a tangent plane
 //! there.
 
+use crate::math;
 use glam::{DVec2, DVec3};
 
 use super::input::ProfileInput;
@@ -181,7 +182,7 @@ impl Silhouettes {
                         let near = detect_corners(&pts[i], sharp_angle);
                         let t = one_sided_tangent_within(&pts[i], index(i), e == 0, &near);
                         forced_of(i).contains(&index(i))
-                            || 2.0 * t.y.abs().clamp(0.0, 1.0).asin() > sharp_angle
+                            || 2.0 * math::asin(t.y.abs().clamp(0.0, 1.0)) > sharp_angle
                     });
                     if pointed {
                         EndKind::Tip

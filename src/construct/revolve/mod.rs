@@ -312,8 +312,12 @@ mod tests {
             .map(|i| {
                 let t = -PI / 2.0 + PI * i as f64 / n as f64;
                 [
-                    if i == 0 || i == n { 0.0 } else { r * t.cos() },
-                    r * t.sin(),
+                    if i == 0 || i == n {
+                        0.0
+                    } else {
+                        r * crate::math::cos(t)
+                    },
+                    r * crate::math::sin(t),
                 ]
             })
             .collect()

@@ -130,7 +130,11 @@ impl RevolvedProfile {
 
 /// The point at `(r, z)` turned by `theta` radians about the z axis.
 pub fn revolve_point(p: DVec2, theta: f64) -> DVec3 {
-    DVec3::new(p.x * theta.cos(), p.x * theta.sin(), p.y)
+    DVec3::new(
+        p.x * crate::math::cos(theta),
+        p.x * crate::math::sin(theta),
+        p.y,
+    )
 }
 
 /// Data point of a smooth-pole cap vertex at relative radius `radius` (1 at the last ring,

@@ -589,7 +589,7 @@ impl MeridianPlane {
 /// Whether the span at `v` from its neighbour `p` to its neighbour `n` that holds `q` is
 /// reflex (180° or more).
 fn is_reflex(v: DVec2, p: DVec2, n: DVec2, q: DVec2) -> bool {
-    let turn = |w: DVec2| (w - v).y.atan2((w - v).x);
+    let turn = |w: DVec2| crate::math::atan2((w - v).y, (w - v).x);
     let ccw = |from: f64, to: f64| (to - from).rem_euclid(TAU);
     let (tp, tn, tq) = (turn(p), turn(n), turn(q));
     let span = if ccw(tp, tq) < ccw(tp, tn) {

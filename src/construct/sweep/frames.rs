@@ -30,6 +30,7 @@
 //! corner sample's section lies in the *miter* plane (the bisector plane), so that the straight
 //! pieces on both sides meet like a mitered pipe elbow.
 
+use crate::math;
 use glam::{DMat3, DVec3};
 use serde::{Deserialize, Serialize};
 
@@ -151,7 +152,7 @@ pub fn frenet_normal(p: &FramePoint, min_curvature: f64) -> Option<DVec3> {
 
 /// Signed angle from `from` to `to` about the unit `axis` (both perpendicular to it).
 pub fn signed_angle(from: DVec3, to: DVec3, axis: DVec3) -> f64 {
-    from.cross(to).dot(axis).atan2(from.dot(to))
+    math::atan2(from.cross(to).dot(axis), from.dot(to))
 }
 
 fn check_points(points: &[FramePoint], closed: bool) -> Result<()> {
@@ -224,7 +225,7 @@ fn min_rotation(from: DVec3, to: DVec3) -> DMat3 {
     if s < 1e-15 {
         return DMat3::IDENTITY;
     }
-    DMat3::from_axis_angle(axis / s, s.atan2(from.dot(to)))
+    DMat3::from_axis_angle(axis / s, math::atan2(s, from.dot(to)))
 }
 
 /// One double-reflection step: carry the normal `r` (perpendicular to `t0` at `x0`) to the
@@ -306,7 +307,7 @@ fn fixed_frames(
             return Err(Error::invalid_argument(format!(
                 "fixed frame: at trajectory sample {i} the trajectory turns {:.1}° away from \
                  its start direction, so the translated profile would fold; use \"rmf\"",
-                c.clamp(-1.0, 1.0).acos().to_degrees()
+                math::acos(c.clamp(-1.0, 1.0)).to_degrees()
             )));
         }
     }
@@ -416,9 +417,9 @@ mod tests {
         (0..n)
             .map(|i| {
                 let t = TAU * turns * i as f64 / (n - 1) as f64;
-                let pos = DVec3::new(r * t.cos(), r * t.sin(), h * t);
-                let tan = DVec3::new(-r * t.sin(), r * t.cos(), h) / c;
-                let curv = DVec3::new(-t.cos(), -t.sin(), 0.0) * (r / (c * c));
+                let pos = DVec3::new(r * math::cos(t), r * math::sin(t), h * t);
+                let tan = DVec3::new(-r * math::sin(t), r * math::cos(t), h) / c;
+                let curv = DVec3::new(-math::cos(t), -math::sin(t), 0.0) * (r / (c * c));
                 FramePoint::smooth(pos, tan, curv)
             })
             .collect()
@@ -482,8 +483,8 @@ mod tests {
         let (p, q, big, small) = (2.0, 3.0, 2.0, 0.7);
         // Position = (ρ cos pt, ρ sin pt, small sin qt), ρ = big + small cos qt; the k-th
         // derivative of cos/sin(ωt) is ω^k times a phase shift of kπ/2.
-        let c = |w: f64, k: i32| w.powi(k) * (w * t + k as f64 * PI / 2.0).cos();
-        let s = |w: f64, k: i32| w.powi(k) * (w * t + k as f64 * PI / 2.0).sin();
+        let c = |w: f64, k: i32| w.powi(k) * math::cos(w * t + k as f64 * PI / 2.0);
+        let s = |w: f64, k: i32| w.powi(k) * math::sin(w * t + k as f64 * PI / 2.0);
         let rho = |k: i32| {
             if k == 0 {
                 big + small * c(q, 0)
@@ -661,9 +662,9 @@ mod tests {
             .map(|i| {
                 let t = TAU * i as f64 / n as f64;
                 FramePoint::smooth(
-                    DVec3::new(t.cos(), t.sin(), 0.0),
-                    DVec3::new(-t.sin(), t.cos(), 0.0),
-                    -DVec3::new(t.cos(), t.sin(), 0.0),
+                    DVec3::new(math::cos(t), math::sin(t), 0.0),
+                    DVec3::new(-math::sin(t), math::cos(t), 0.0),
+                    -DVec3::new(math::cos(t), math::sin(t), 0.0),
                 )
             })
             .collect();
@@ -682,10 +683,10 @@ mod tests {
         let pts: Vec<FramePoint> = (0..n)
             .map(|i| {
                 let t = TAU * i as f64 / n as f64;
-                let tangent = DVec3::new(-t.sin(), t.cos(), 0.0);
-                let inward = -DVec3::new(t.cos(), t.sin(), 0.0);
+                let tangent = DVec3::new(-math::sin(t), math::cos(t), 0.0);
+                let inward = -DVec3::new(math::cos(t), math::sin(t), 0.0);
                 let k = DMat3::from_axis_angle(tangent, t / 2.0) * inward;
-                FramePoint::smooth(DVec3::new(t.cos(), t.sin(), 0.0), tangent, k)
+                FramePoint::smooth(DVec3::new(math::cos(t), math::sin(t), 0.0), tangent, k)
             })
             .collect();
         let e = compute_frames(&pts, true, FrameKind::Frenet).unwrap_err();
@@ -702,7 +703,7 @@ mod tests {
         let mut pts = Vec::new();
         for i in 0..8 {
             let t = TAU / 4.0 * i as f64 / 8.0;
-            let (c, s) = (t.cos(), t.sin());
+            let (c, s) = (math::cos(t), math::sin(t));
             let radial = DVec3::new(c, s, 0.0);
             pts.push(FramePoint::smooth(
                 radial - DVec3::X,
@@ -716,7 +717,7 @@ mod tests {
         }
         for i in 0..=8 {
             let t = TAU / 4.0 * i as f64 / 8.0;
-            let (c, s) = (t.cos(), t.sin());
+            let (c, s) = (math::cos(t), math::sin(t));
             let p = DVec3::new(-2.0 - s, 1.0, c - 1.0);
             pts.push(FramePoint::smooth(
                 p,

@@ -376,7 +376,7 @@ mod tests {
         assert!(g.crease_rings.is_empty() && g.crease_columns.is_empty());
         let mut worst: f64 = 0.0;
         for p in g.rings.iter().flatten() {
-            let q = (p.truncate().length() - 2.0).hypot(p.z);
+            let q = ((p.truncate().length() - 2.0).powi(2) + p.z * p.z).sqrt();
             worst = worst.max((q - 0.5).abs());
         }
         assert!(worst < 2e-4, "torus deviation {worst}");

@@ -127,6 +127,7 @@ impl Trajectory {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::math;
     use std::f64::consts::TAU;
 
     fn sharp() -> f64 {
@@ -138,7 +139,7 @@ mod tests {
         let pts: Vec<DVec3> = (0..=40)
             .map(|i| {
                 let t = TAU * i as f64 / 20.0;
-                DVec3::new(t.cos(), t.sin(), 0.1 * t)
+                DVec3::new(math::cos(t), math::sin(t), 0.1 * t)
             })
             .collect();
         let tr = Trajectory::new(&pts, false, Interpolation::Spline, sharp(), &[]).unwrap();

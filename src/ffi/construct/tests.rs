@@ -1,3 +1,4 @@
+use crate::math;
 use std::ptr::{null, null_mut};
 
 use super::*;
@@ -20,7 +21,9 @@ fn circle(n: usize, r: f64, dims: usize) -> Vec<f64> {
     (0..n)
         .flat_map(|i| {
             let t = std::f64::consts::TAU * i as f64 / n as f64;
-            [r * t.cos(), r * t.sin(), 0.0].into_iter().take(dims)
+            [r * math::cos(t), r * math::sin(t), 0.0]
+                .into_iter()
+                .take(dims)
         })
         .collect()
 }

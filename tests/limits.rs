@@ -1,0 +1,128 @@
+//! Documented ceilings on sizes a caller controls, checked before allocating: absurd
+//! requests to the mesh constructor, the refiner and the OBJ reader are refused with a
+//! specific error and message (and, through the C API, no output), without allocating what
+//! they ask for (a test that tried would run out of memory instead of passing).
+
+use std::ptr;
+
+use profsubd::ffi::error::last_error;
+use profsubd::ffi::mesh::{profsubd_mesh, profsubd_mesh_desc, profsubd_mesh_new};
+use profsubd::ffi::mesh_io::profsubd_mesh_read_obj;
+use profsubd::ffi::refine::profsubd_refine_uniform;
+use profsubd::ffi::status::profsubd_status::*;
+use profsubd::io::obj::{read_obj_file, MAX_OBJ_BYTES};
+use profsubd::refine::{refine_uniform, MAX_LEVEL, MAX_REFINED_FACE_INDICES};
+use profsubd::{Error, Mesh, MeshParts, SubdivOptions};
+
+/// An `n` x `n` grid of quads.
+fn grid(n: u32) -> Mesh {
+    let positions = (0..=n)
+        .flat_map(|j| (0..=n).map(move |i| glam::DVec3::new(i as f64, j as f64, 0.0)))
+        .collect();
+    let mut face_indices = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            let v = j * (n + 1) + i;
+            face_indices.extend([v, v + 1, v + n + 2, v + n + 1]);
+        }
+    }
+    Mesh::from_parts(MeshParts {
+        positions,
+        face_sizes: vec![4; (n * n) as usize],
+        face_indices,
+        ..Default::default()
+    })
+    .unwrap()
+}
+
+#[test]
+fn refinement_above_its_ceilings_is_refused_before_allocating() {
+    let options = SubdivOptions::default();
+    // 4096 quads: level 7 would need 4096 * 4^7 * 4 = 2^28 face indices (2^26 allowed).
+    let mesh = grid(64);
+    for level in [7, MAX_LEVEL] {
+        match refine_uniform(&mesh, &options, level) {
+            Err(Error::InvalidArgument(m)) => assert!(m.contains("face"), "{m}"),
+            other => panic!("level {level}: {other:?}"),
+        }
+    }
+    assert!(matches!(
+        refine_uniform(&grid(1), &options, MAX_LEVEL + 1),
+        Err(Error::InvalidArgument(_))
+    ));
+    // The largest allowed stays allowed: one quad at level 8 is 2^18 face indices.
+    const { assert!(4 << (2 * MAX_LEVEL) <= MAX_REFINED_FACE_INDICES) };
+    assert_eq!(
+        refine_uniform(&grid(1), &options, MAX_LEVEL)
+            .unwrap()
+            .num_faces(),
+        1 << (2 * MAX_LEVEL)
+    );
+    // Through the C API: a status, a message, and no output.
+    let handle = profsubd::ffi::mesh::new_mesh_handle(mesh);
+    let mut out: *mut profsubd_mesh = ptr::null_mut();
+    let s = unsafe { profsubd_refine_uniform(handle, ptr::null(), 8, &mut out) };
+    assert_eq!(s, PROFSUBD_ERROR_INVALID_ARGUMENT);
+    assert!(out.is_null() && !last_error().is_empty());
+    unsafe { profsubd::ffi::mesh::profsubd_mesh_free(handle) };
+}
+
+#[test]
+fn mesh_counts_above_int32_max_are_refused_before_reading_the_arrays() {
+    // Tiny arrays with absurd counts: the library must refuse from the counts alone.
+    let positions = [0.0f64; 3];
+    let sizes = [3u32];
+    let indices = [0u32; 3];
+    for (nv, nf, ni) in [
+        (usize::MAX, 1, 3),
+        (1, 1usize << 40, 3),
+        (1, 1, i32::MAX as usize + 1),
+    ] {
+        let desc = profsubd_mesh_desc {
+            struct_size: std::mem::size_of::<profsubd_mesh_desc>(),
+            positions: positions.as_ptr(),
+            num_vertices: nv,
+            face_sizes: sizes.as_ptr(),
+            num_faces: nf,
+            face_indices: indices.as_ptr(),
+            num_face_indices: ni,
+            crease_vertices: ptr::null(),
+            crease_sharpness: ptr::null(),
+            num_creases: 0,
+            corner_vertices: ptr::null(),
+            corner_sharpness: ptr::null(),
+            num_corners: 0,
+            hole_faces: ptr::null(),
+            num_holes: 0,
+        };
+        let mut out: *mut profsubd_mesh = ptr::null_mut();
+        let s = unsafe { profsubd_mesh_new(&desc, &mut out) };
+        assert_eq!(s, PROFSUBD_ERROR_INVALID_ARGUMENT, "{nv} {nf} {ni}");
+        assert!(out.is_null());
+        assert!(
+            last_error().contains("the limit is 2147483647"),
+            "{}",
+            last_error()
+        );
+    }
+}
+
+#[test]
+fn an_obj_file_above_the_ceiling_is_refused_without_reading_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("huge.obj");
+    // A sparse file: no disk space, and reading it would take a GiB of memory.
+    std::fs::File::create(&path)
+        .unwrap()
+        .set_len(MAX_OBJ_BYTES + 1)
+        .unwrap();
+    match read_obj_file(&path) {
+        Err(Error::Parse { message, .. }) => assert!(message.contains("limit"), "{message}"),
+        other => panic!("{other:?}"),
+    }
+    let c_path = std::ffi::CString::new(path.to_str().unwrap()).unwrap();
+    let mut out: *mut profsubd_mesh = ptr::null_mut();
+    let s = unsafe { profsubd_mesh_read_obj(c_path.as_ptr(), &mut out) };
+    assert_eq!(s, PROFSUBD_ERROR_PARSE);
+    assert!(out.is_null() && last_error().contains("limit"));
+}

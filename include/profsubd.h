@@ -276,8 +276,9 @@ typedef enum profsubd_osd_hazard {
 } profsubd_osd_hazard;
 
 /**
- * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
- * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
+ * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque; safe
+ * to share between threads for evaluation; `profsubd_evaluator_update_positions` replaces
+ * the control points' positions, keeping the topology). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
  *
  * Points are `(face, u, v)` with OpenSubdiv's Ptex parameterization: on a mesh of quads,
@@ -626,6 +627,21 @@ const char *profsubd_last_error_message(void);
 enum profsubd_status profsubd_evaluator_new(const struct profsubd_mesh *mesh,
                                             const struct profsubd_options *options,
                                             struct profsubd_evaluator **out);
+
+/**
+ * Replace the control points' positions: `xyz` holds `3 * n` doubles (x y z per control
+ * vertex, in vertex order), `n` the mesh's vertex count. The evaluator then gives exactly
+ * (bit for bit) what one built with these positions gives, for the cost of running its
+ * stored stencils rather than a build: the topology (patches, refined neighbourhoods) is
+ * kept. Not concurrently with other calls on the same evaluator.
+ *
+ * Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for `n` not the mesh's vertex count or a
+ * non-finite coordinate, `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator` or `xyz`.
+ * The evaluator is unchanged on error.
+ */
+enum profsubd_status profsubd_evaluator_update_positions(struct profsubd_evaluator *evaluator,
+                                                         const double *xyz,
+                                                         size_t n);
 
 /**
  * Release an evaluator (NULL is a no-op).

@@ -21,6 +21,7 @@ pub mod folds;
 pub mod patch_corner;
 pub mod patch_regular;
 pub mod patch_topology;
+mod points;
 pub mod ptex;
 pub mod sample;
 pub mod stencil;

@@ -520,3 +520,114 @@ fn limit_vertices_mark_the_isolated_vertex() {
         assert!(a[27..].iter().all(|x| x.is_nan()));
     }
 }
+
+/// Evaluate `(face, 0.3, 0.6)` for every parametric face through the C API (positions and
+/// derivatives, 9 doubles per face).
+fn evaluate_all(ev: *const profsubd_evaluator) -> Vec<f64> {
+    let faces: Vec<u32> = (0..17).collect();
+    let (u, v) = (vec![0.3; 17], vec![0.6; 17]);
+    let mut out = vec![0.0; 3 * 3 * 17];
+    let (p, rest) = out.split_at_mut(3 * 17);
+    let (du, dv) = rest.split_at_mut(3 * 17);
+    unsafe {
+        let st = profsubd_evaluator_evaluate_points(
+            ev,
+            profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
+            0,
+            faces.as_ptr(),
+            u.as_ptr(),
+            v.as_ptr(),
+            17,
+            p.as_mut_ptr(),
+            du.as_mut_ptr(),
+            dv.as_mut_ptr(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+    }
+    out
+}
+
+#[test]
+fn update_positions_equals_a_fresh_build_and_rejects_bad_input_unchanged() {
+    let ev = evaluator();
+    let before = evaluate_all(ev);
+    let moved: Vec<f64> = mesh()
+        .positions()
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| {
+            let q = *p * 1.5 + DVec3::new(0.1 * i as f64, -0.2, (i as f64).sin());
+            [q.x, q.y, q.z]
+        })
+        .collect();
+    let mut parts = mesh().into_parts();
+    parts.positions = moved.chunks_exact(3).map(DVec3::from_slice).collect();
+    let fresh = {
+        let m = new_mesh_handle(Mesh::from_parts(parts).unwrap());
+        let mut fresh = null_mut();
+        unsafe {
+            assert_eq!(profsubd_evaluator_new(m, null(), &mut fresh), PROFSUBD_OK);
+            profsubd_mesh_free(m);
+        }
+        fresh
+    };
+    let mut bad = moved.clone();
+    bad[7] = f64::NAN;
+    unsafe {
+        let cases: [(
+            *mut profsubd_evaluator,
+            *const f64,
+            usize,
+            profsubd_status,
+            &str,
+        ); 5] = [
+            (
+                ev,
+                moved.as_ptr(),
+                8,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "8 positions given for a mesh of 9 vertices",
+            ),
+            (
+                ev,
+                moved.as_ptr(),
+                usize::MAX,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "for a mesh of 9 vertices",
+            ),
+            (
+                ev,
+                bad.as_ptr(),
+                9,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "position 2 has a non-finite coordinate",
+            ),
+            (ev, null(), 9, PROFSUBD_ERROR_NULL_ARGUMENT, "xyz"),
+            (
+                null_mut(),
+                moved.as_ptr(),
+                9,
+                PROFSUBD_ERROR_NULL_ARGUMENT,
+                "evaluator",
+            ),
+        ];
+        for (e, xyz, n, status, message) in cases {
+            assert_eq!(profsubd_evaluator_update_positions(e, xyz, n), status);
+            assert!(last_error().contains(message), "{}", last_error());
+            let same: Vec<u64> = evaluate_all(ev).iter().map(|x| x.to_bits()).collect();
+            let want: Vec<u64> = before.iter().map(|x| x.to_bits()).collect();
+            assert_eq!(same, want, "the evaluator changed on error");
+        }
+        assert_eq!(
+            profsubd_evaluator_update_positions(ev, moved.as_ptr(), 9),
+            PROFSUBD_OK
+        );
+        let got: Vec<u64> = evaluate_all(ev).iter().map(|x| x.to_bits()).collect();
+        let want: Vec<u64> = evaluate_all(fresh).iter().map(|x| x.to_bits()).collect();
+        assert_eq!(got, want);
+        assert_ne!(evaluate_all(ev)[..3], before[..3]);
+        profsubd_evaluator_free(ev);
+        profsubd_evaluator_free(fresh);
+    }
+}

@@ -44,6 +44,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <thread>
 
 using namespace OpenSubdiv;
 using Clock = std::chrono::steady_clock;
@@ -234,12 +235,18 @@ int main(int argc, char **argv) {
         if (ev) profsubd_evaluator_free(ev);
         profsubd_evaluator_new(mesh.get(), opts, &ev);
     });
-    double t_eval_ps = best(3, [&] {
+    auto eval_ps = [&] {
         profsubd_status st = profsubd_evaluator_evaluate(ev, faces.data(), us.data(), vs.data(), N, P.data(),
                                                          DU.data(), DV.data());
         if (st != PROFSUBD_OK) std::fprintf(stderr, "evaluate: %s\n", profsubd_last_error_message());
-    });
+    };
+    profsubd_evaluator_set_threads(ev, 0);
+    double t_eval_ps_all = best(3, eval_ps);
+    std::vector<double> Pall = P;
+    profsubd_evaluator_set_threads(ev, 1);
+    double t_eval_ps = best(3, eval_ps);
     std::vector<double> Pps = P;
+    bool same_all = std::equal(Pall.begin(), Pall.end(), Pps.begin());
     checksum += P[0];
 
     // --- P1: Bfr with its cache.
@@ -377,6 +384,9 @@ int main(int argc, char **argv) {
     std::printf("  ratio profsubd/Far PatchTable:       evaluate %.3f   build+evaluate %.3f\n", t_eval_ps / t_eval_far,
                 (t_build_ps + t_eval_ps) / (t_build_far + t_eval_far));
     std::printf("  max |profsubd - Bfr| over all coordinates: %.3g\n", maxdiff);
+    std::printf("\nAll cores (%u): profsubd evaluate %8.1f ms, speed-up %.2f over one thread, results %s\n",
+                std::thread::hardware_concurrency(), 1e3 * t_eval_ps_all, t_eval_ps / t_eval_ps_all,
+                same_all ? "bit-identical" : "DIFFERENT");
     std::printf("\nPosition update, same topology (best of 5, alternating two position sets)\n");
     std::printf("  profsubd_evaluator_update_positions:       %8.2f ms\n", 1e3 * t_update_ps);
     std::printf("  Far refinement + local-point stencils:     %8.2f ms  (%d stencils, double)\n", 1e3 * t_update_far,

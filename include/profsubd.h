@@ -644,6 +644,17 @@ enum profsubd_status profsubd_evaluator_update_positions(struct profsubd_evaluat
                                                          size_t n);
 
 /**
+ * Set how many threads `profsubd_evaluator_evaluate`, `profsubd_evaluator_evaluate_points`
+ * and `profsubd_evaluator_update_positions` use: `threads` = 0 (the default) for all cores,
+ * 1 for the calling thread only. Results are bit for bit the same for every setting. Not
+ * concurrently with other calls on the same evaluator.
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator`.
+ */
+enum profsubd_status profsubd_evaluator_set_threads(struct profsubd_evaluator *evaluator,
+                                                    size_t threads);
+
+/**
  * Release an evaluator (NULL is a no-op).
  */
 void profsubd_evaluator_free(struct profsubd_evaluator *evaluator);

@@ -84,6 +84,8 @@ pub struct Evaluator {
     deep: Vec<DeepFragment>,
     /// Every point the leaves and deep fragments read, over the control points.
     program: PointProgram,
+    /// Threads for batches of points (0: all cores).
+    threads: usize,
 }
 
 /// A fragment refined on demand at evaluation (a [`Node::Deep`]).
@@ -133,6 +135,7 @@ impl Evaluator {
             patch_points: Vec::new(),
             deep: Vec::new(),
             program: PointProgram::new(mesh.num_vertices()),
+            threads: 0,
         };
         ev.roots.reserve(ev.ptex.len());
         for (f, &size) in mesh.face_sizes().iter().enumerate() {
@@ -209,15 +212,25 @@ impl Evaluator {
     /// Patches and deep fragments from `positions` (checked).
     fn update(&mut self, positions: &[DVec3]) {
         let values = self.program.run(positions);
-        self.patches.clear();
-        self.patches.extend(
-            self.patch_points
-                .iter()
-                .map(|p| p.patch(|v| values[v as usize])),
-        );
+        let points = &self.patch_points;
+        self.patches = super::parallel::map(points.len(), self.threads, |i| {
+            points[i].patch(|v| values[v as usize])
+        });
         for d in &mut self.deep {
             d.positions = d.points.iter().map(|&p| values[p as usize]).collect();
         }
+    }
+
+    /// Set how many threads batches of points ([`Evaluator::evaluate_many`],
+    /// [`Evaluator::evaluate_points`]) and position updates run on: 0 (the default) for all
+    /// cores. The results do not depend on it, bit for bit.
+    pub fn set_threads(&mut self, threads: usize) {
+        self.threads = threads;
+    }
+
+    /// The thread setting ([`Evaluator::set_threads`]; 0: all cores).
+    pub fn threads(&self) -> usize {
+        self.threads
     }
 
     /// Number of points the evaluator computes from the control points (control points
@@ -417,7 +430,7 @@ impl Evaluator {
     /// first bad point, naming its index; a point without limit surface is a bad point here
     /// (see [`Evaluator::evaluate_points`] for the marking alternative).
     pub fn evaluate_many(&self, faces: &[u32], u: &[f64], v: &[f64]) -> Result<Vec<LimitSample>> {
-        each_point(faces, u, v, |f, u, v| self.evaluate(f, u, v))
+        each_point(faces, u, v, self.threads, |f, u, v| self.evaluate(f, u, v))
     }
 
     /// Whether parametric (Ptex) face `face` has a limit surface (see [`super::surface`]);
@@ -465,7 +478,9 @@ impl Evaluator {
         u: &[f64],
         v: &[f64],
     ) -> Result<Vec<Option<LimitSample>>> {
-        each_point(faces, u, v, |f, u, v| self.evaluate_in(domain, f, u, v))
+        each_point(faces, u, v, self.threads, |f, u, v| {
+            self.evaluate_in(domain, f, u, v)
+        })
     }
 
     /// Exact limit position and derivatives at every control vertex, in vertex order, `None`
@@ -531,13 +546,15 @@ impl Evaluator {
     }
 }
 
-/// `eval(faces[i], u[i], v[i])` for every point; the three lists must have the same length.
-/// An [`Error::InvalidArgument`] names the point.
-fn each_point<T>(
+/// `eval(faces[i], u[i], v[i])` for every point, on `threads` threads (0: all cores); the
+/// three lists must have the same length. An [`Error::InvalidArgument`] names the point (the
+/// first bad one, whatever the thread count).
+fn each_point<T: Send>(
     faces: &[u32],
     u: &[f64],
     v: &[f64],
-    eval: impl Fn(u32, f64, f64) -> Result<T>,
+    threads: usize,
+    eval: impl Fn(u32, f64, f64) -> Result<T> + Sync,
 ) -> Result<Vec<T>> {
     if faces.len() != u.len() || faces.len() != v.len() {
         return Err(Error::invalid_argument(format!(
@@ -547,14 +564,12 @@ fn each_point<T>(
             v.len()
         )));
     }
-    (0..faces.len())
-        .map(|i| {
-            eval(faces[i], u[i], v[i]).map_err(|e| match e {
-                Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
-                other => other,
-            })
+    super::parallel::try_map(faces.len(), threads, |i| {
+        eval(faces[i], u[i], v[i]).map_err(|e| match e {
+            Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
+            other => other,
         })
-        .collect()
+    })
 }
 
 /// One level of refinement of fragment `nb` with vertex data `values`; the children of its

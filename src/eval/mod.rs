@@ -18,6 +18,7 @@ mod dense;
 pub mod domain;
 pub mod evaluator;
 pub mod folds;
+mod parallel;
 pub mod patch_corner;
 pub mod patch_regular;
 pub mod patch_topology;

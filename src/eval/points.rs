@@ -11,6 +11,8 @@
 //! under a semi-sharp crease has a handful of terms, not the 30-odd control points it
 //! depends on.
 
+use std::collections::HashMap;
+
 use glam::DVec3;
 
 use crate::refine::{interpolate, Primvar, Refinement};
@@ -18,12 +20,29 @@ use crate::topology::Level;
 
 /// Local points as weighted sums of earlier points. Point `i < num_control` is control
 /// point `i`; point `num_control + k` is row `k`.
+///
+/// Neighbouring fragments refine the same vertices again from the same points with the same
+/// weights; such a point is recorded once (by its terms, which fix its value bit for bit).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct PointProgram {
     num_control: u32,
     offsets: Vec<u32>,
     sources: Vec<u32>,
     weights: Vec<f64>,
+    /// The first local point with the terms of a given hash (while recording).
+    by_terms: HashMap<u64, u32>,
+}
+
+/// A hash of a point's terms (sources and weights' bits), for [`PointProgram::by_terms`].
+fn hash_terms(sources: &[u32], weights: &[f64]) -> u64 {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for (&s, &w) in sources.iter().zip(weights) {
+        for x in [u64::from(s), w.to_bits()] {
+            h = (h ^ x).wrapping_mul(0x0000_0100_0000_01b3);
+            h ^= h >> 29;
+        }
+    }
+    h
 }
 
 /// Bit marking a term of [`Recorded`] as a child vertex of the same refinement (face points,
@@ -59,6 +78,7 @@ impl PointProgram {
             offsets: vec![0],
             sources: Vec::new(),
             weights: Vec::new(),
+            by_terms: HashMap::new(),
         }
     }
 
@@ -67,13 +87,32 @@ impl PointProgram {
         self.num_control as usize + self.offsets.len() - 1
     }
 
+    /// The point with these terms: an earlier one with the same terms, else a new one.
     fn push(&mut self, terms: impl IntoIterator<Item = (u32, f64)>) -> u32 {
+        let start = self.sources.len();
         for (s, w) in terms {
             self.sources.push(s);
             self.weights.push(w);
         }
+        let h = hash_terms(&self.sources[start..], &self.weights[start..]);
+        if let Some(&p) = self.by_terms.get(&h) {
+            let k = p as usize - self.num_control as usize;
+            let (a, b) = (self.offsets[k] as usize, self.offsets[k + 1] as usize);
+            let same = self.sources[a..b] == self.sources[start..]
+                && self.weights[a..b]
+                    .iter()
+                    .zip(&self.weights[start..])
+                    .all(|(x, y)| x.to_bits() == y.to_bits());
+            if same {
+                self.sources.truncate(start);
+                self.weights.truncate(start);
+                return p;
+            }
+        }
         self.offsets.push(self.sources.len() as u32);
-        self.num_points() as u32 - 1
+        let p = self.num_points() as u32 - 1;
+        self.by_terms.entry(h).or_insert(p);
+        p
     }
 
     /// The points of the child of refinement `r` of `level`, whose vertices are points
@@ -129,7 +168,7 @@ impl PointProgram {
     }
 
     /// Keep only the points `roots` name and those they read, numbered in the same order;
-    /// `roots` are renumbered in place.
+    /// `roots` are renumbered in place. Ends the recording (no more merging of equal points).
     pub fn prune(&mut self, roots: &mut [&mut [u32]]) {
         let nc = self.num_control as usize;
         let np = self.num_points();
@@ -172,6 +211,7 @@ impl PointProgram {
                 }
             }
         }
+        kept.by_terms = HashMap::new();
         *self = kept;
     }
 }

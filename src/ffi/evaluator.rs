@@ -90,6 +90,23 @@ pub unsafe extern "C" fn profsubd_evaluator_update_positions(
     })
 }
 
+/// Set how many threads `profsubd_evaluator_evaluate`, `profsubd_evaluator_evaluate_points`
+/// and `profsubd_evaluator_update_positions` use: `threads` = 0 (the default) for all cores,
+/// 1 for the calling thread only. Results are bit for bit the same for every setting. Not
+/// concurrently with other calls on the same evaluator.
+///
+/// Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator`.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_evaluator_set_threads(
+    evaluator: *mut profsubd_evaluator,
+    threads: usize,
+) -> profsubd_status {
+    status_call(|| {
+        handle::borrow_mut(evaluator, "evaluator")?.set_threads(threads);
+        Ok(())
+    })
+}
+
 /// Release an evaluator (NULL is a no-op).
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_evaluator_free(evaluator: *mut profsubd_evaluator) {

@@ -631,3 +631,80 @@ fn update_positions_equals_a_fresh_build_and_rejects_bad_input_unchanged() {
         profsubd_evaluator_free(fresh);
     }
 }
+
+#[test]
+fn thread_count_changes_nothing_in_the_results() {
+    let ev = evaluator();
+    // Enough points for several threads; every parametric face, corners included.
+    let n = 20_000;
+    let faces: Vec<u32> = (0..n).map(|i| (i * 7 % 17) as u32).collect();
+    let u: Vec<f64> = (0..n).map(|i| ((i * 37) % 101) as f64 / 100.0).collect();
+    let v: Vec<f64> = (0..n).map(|i| ((i * 53) % 97) as f64 / 96.0).collect();
+    let run = |threads: usize| {
+        let mut out = vec![0.0; 9 * n];
+        let mut mask = vec![0u8; n];
+        let (p, rest) = out.split_at_mut(3 * n);
+        let (du, dv) = rest.split_at_mut(3 * n);
+        unsafe {
+            assert_eq!(profsubd_evaluator_set_threads(ev, threads), PROFSUBD_OK);
+            let st = profsubd_evaluator_evaluate_points(
+                ev,
+                profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
+                0,
+                faces.as_ptr(),
+                u.as_ptr(),
+                v.as_ptr(),
+                n,
+                p.as_mut_ptr(),
+                du.as_mut_ptr(),
+                dv.as_mut_ptr(),
+                mask.as_mut_ptr(),
+            );
+            assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+        }
+        let bits: Vec<u64> = out.iter().map(|x| x.to_bits()).collect();
+        (bits, mask)
+    };
+    let one = run(1);
+    assert!(
+        one.1.contains(&0) && one.1.contains(&1),
+        "holes and surface both present"
+    );
+    for threads in [0, 2, 3, 8] {
+        assert_eq!(run(threads), one, "{threads} threads");
+    }
+    unsafe {
+        assert_eq!(
+            profsubd_evaluator_set_threads(null_mut(), 2),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        // The first bad point is named whatever the thread count.
+        let mut bad_u = u.clone();
+        bad_u[n - 10] = 2.0;
+        bad_u[15_000] = -1.0;
+        let mut p = vec![0.0; 3 * n];
+        for threads in [1, 4] {
+            assert_eq!(profsubd_evaluator_set_threads(ev, threads), PROFSUBD_OK);
+            let st = profsubd_evaluator_evaluate_points(
+                ev,
+                profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
+                0,
+                faces.as_ptr(),
+                bad_u.as_ptr(),
+                v.as_ptr(),
+                n,
+                p.as_mut_ptr(),
+                null_mut(),
+                null_mut(),
+                null_mut(),
+            );
+            assert_eq!(st, PROFSUBD_ERROR_INVALID_ARGUMENT);
+            assert!(
+                last_error().contains(": point 15000: (u, v) = (-1,"),
+                "{}",
+                last_error()
+            );
+        }
+        profsubd_evaluator_free(ev);
+    }
+}

@@ -49,21 +49,49 @@ fn hash_terms(sources: &[u32], weights: &[f64]) -> u64 {
 /// which edge and vertex points read) rather than a parent vertex.
 const CHILD: u32 = 1 << 31;
 
+/// Terms a [`Recorded`] value holds without allocating: enough for face and edge points of
+/// quads and vertex points up to valence 5.
+const INLINE_TERMS: usize = 11;
+
 /// A refined vertex as the weighted sum interpolation built: its terms over parent vertices
-/// and (with [`CHILD`]) earlier child vertices, in the order they were added.
-#[derive(Debug, Clone, Default)]
+/// and (with [`CHILD`]) earlier child vertices, in the order they were added (the first
+/// [`INLINE_TERMS`] in place, the rest in `spill`: a build records millions).
+#[derive(Debug, Clone)]
 struct Recorded {
     /// This vertex: its parent index, or [`CHILD`] | its child index once complete.
     own: u32,
-    terms: Vec<(u32, f64)>,
+    len: u32,
+    inline: [(u32, f64); INLINE_TERMS],
+    spill: Vec<(u32, f64)>,
+}
+
+impl Recorded {
+    fn of(own: u32) -> Recorded {
+        Recorded {
+            own,
+            len: 0,
+            inline: [(0, 0.0); INLINE_TERMS],
+            spill: Vec::new(),
+        }
+    }
+
+    fn terms(&self) -> impl Iterator<Item = &(u32, f64)> {
+        let n = (self.len as usize).min(INLINE_TERMS);
+        self.inline[..n].iter().chain(&self.spill)
+    }
 }
 
 impl Primvar for Recorded {
     fn zero() -> Self {
-        Recorded::default()
+        Recorded::of(0)
     }
     fn add_weighted(&mut self, src: &Self, weight: f64) {
-        self.terms.push((src.own, weight));
+        let term = (src.own, weight);
+        match self.inline.get_mut(self.len as usize) {
+            Some(slot) => *slot = term,
+            None => self.spill.push(term),
+        }
+        self.len += 1;
     }
     fn finish(&mut self, child: u32) {
         self.own = CHILD | child;
@@ -120,12 +148,7 @@ impl PointProgram {
     /// points come first, then edge points, then vertex points: the order refinement
     /// completes them in, so that every term reads an earlier point.
     pub fn record(&mut self, level: &Level, r: &Refinement, parent: &[u32]) -> Vec<u32> {
-        let src: Vec<Recorded> = (0..level.num_vertices() as u32)
-            .map(|v| Recorded {
-                own: v,
-                terms: Vec::new(),
-            })
-            .collect();
+        let src: Vec<Recorded> = (0..level.num_vertices() as u32).map(Recorded::of).collect();
         let dst = interpolate(level, r, &src);
         let mut points = vec![0u32; dst.len()];
         let first_face = r.face_child_vertex(0) as usize;
@@ -135,7 +158,7 @@ impl PointProgram {
         let first_vertex = r.vertex_child_vertex(0) as usize;
         let vertices = first_vertex..first_vertex + level.num_vertices();
         for cv in faces.chain(edges).chain(vertices) {
-            let terms = dst[cv].terms.iter().map(|&(s, w)| {
+            let terms = dst[cv].terms().map(|&(s, w)| {
                 let p = if s & CHILD != 0 {
                     points[(s & !CHILD) as usize]
                 } else {

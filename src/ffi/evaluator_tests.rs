@@ -521,14 +521,19 @@ fn limit_vertices_mark_the_isolated_vertex() {
     }
 }
 
-/// Evaluate `(face, 0.3, 0.6)` for every parametric face through the C API (positions and
-/// derivatives, 9 doubles per face).
-fn evaluate_all(ev: *const profsubd_evaluator) -> Vec<f64> {
-    let faces: Vec<u32> = (0..17).collect();
-    let (u, v) = (vec![0.3; 17], vec![0.6; 17]);
-    let mut out = vec![0.0; 3 * 3 * 17];
-    let (p, rest) = out.split_at_mut(3 * 17);
-    let (du, dv) = rest.split_at_mut(3 * 17);
+/// Positions and derivatives (9 doubles a point, all positions first) and the surface mask
+/// at `(faces[i], u[i], v[i])` through the C API, Ptex domain, marking.
+fn evaluate_marked(
+    ev: *const profsubd_evaluator,
+    faces: &[u32],
+    u: &[f64],
+    v: &[f64],
+) -> (Vec<f64>, Vec<u8>) {
+    let n = faces.len();
+    let mut out = vec![0.0; 9 * n];
+    let mut mask = vec![0u8; n];
+    let (p, rest) = out.split_at_mut(3 * n);
+    let (du, dv) = rest.split_at_mut(3 * n);
     unsafe {
         let st = profsubd_evaluator_evaluate_points(
             ev,
@@ -537,15 +542,21 @@ fn evaluate_all(ev: *const profsubd_evaluator) -> Vec<f64> {
             faces.as_ptr(),
             u.as_ptr(),
             v.as_ptr(),
-            17,
+            n,
             p.as_mut_ptr(),
             du.as_mut_ptr(),
             dv.as_mut_ptr(),
-            null_mut(),
+            mask.as_mut_ptr(),
         );
         assert_eq!(st, PROFSUBD_OK, "{}", last_error());
     }
-    out
+    (out, mask)
+}
+
+/// [`evaluate_marked`] at `(face, 0.3, 0.6)` for every parametric face.
+fn evaluate_all(ev: *const profsubd_evaluator) -> Vec<f64> {
+    let faces: Vec<u32> = (0..17).collect();
+    evaluate_marked(ev, &faces, &[0.3; 17], &[0.6; 17]).0
 }
 
 #[test]
@@ -641,27 +652,11 @@ fn thread_count_changes_nothing_in_the_results() {
     let u: Vec<f64> = (0..n).map(|i| ((i * 37) % 101) as f64 / 100.0).collect();
     let v: Vec<f64> = (0..n).map(|i| ((i * 53) % 97) as f64 / 96.0).collect();
     let run = |threads: usize| {
-        let mut out = vec![0.0; 9 * n];
-        let mut mask = vec![0u8; n];
-        let (p, rest) = out.split_at_mut(3 * n);
-        let (du, dv) = rest.split_at_mut(3 * n);
-        unsafe {
-            assert_eq!(profsubd_evaluator_set_threads(ev, threads), PROFSUBD_OK);
-            let st = profsubd_evaluator_evaluate_points(
-                ev,
-                profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
-                0,
-                faces.as_ptr(),
-                u.as_ptr(),
-                v.as_ptr(),
-                n,
-                p.as_mut_ptr(),
-                du.as_mut_ptr(),
-                dv.as_mut_ptr(),
-                mask.as_mut_ptr(),
-            );
-            assert_eq!(st, PROFSUBD_OK, "{}", last_error());
-        }
+        assert_eq!(
+            unsafe { profsubd_evaluator_set_threads(ev, threads) },
+            PROFSUBD_OK
+        );
+        let (out, mask) = evaluate_marked(ev, &faces, &u, &v);
         let bits: Vec<u64> = out.iter().map(|x| x.to_bits()).collect();
         (bits, mask)
     };

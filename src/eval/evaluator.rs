@@ -14,7 +14,7 @@
 //! depth `d` is scaled by `2^d`.
 //!
 //! The build looks at topology only: every point a patch or a deep fragment needs is
-//! recorded as the weighted sum refinement computes it with ([`super::points`]), and the
+//! recorded as the weighted sum refinement computes it with (module `points`), and the
 //! positions are run through that program afterwards — at construction, and again by
 //! [`Evaluator::set_positions`], which gives bit for bit the evaluator built with the new
 //! positions.

@@ -23,7 +23,12 @@ fn benches(c: &mut Criterion) {
         b.iter(|| Evaluator::new(mesh, &options).unwrap())
     });
 
-    let ev = Evaluator::new(mesh, &options).unwrap();
+    let mut ev = Evaluator::new(mesh, &options).unwrap();
+    ev.set_threads(1);
+    let moved: Vec<_> = mesh.positions().iter().map(|p| *p * 1.01).collect();
+    c.bench_function(&format!("evaluator position update, {label}"), |b| {
+        b.iter(|| ev.set_positions(&moved).unwrap())
+    });
     let n = 10_000;
     let mut rng = ChaCha8Rng::seed_from_u64(7);
     let faces: Vec<u32> = (0..n)
@@ -31,9 +36,15 @@ fn benches(c: &mut Criterion) {
         .collect();
     let us: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
     let vs: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
-    c.bench_function(&format!("evaluate {n} random points, {label}"), |b| {
-        b.iter(|| ev.evaluate_many(&faces, &us, &vs).unwrap())
-    });
+    c.bench_function(
+        &format!("evaluate {n} random points, one thread, {label}"),
+        |b| b.iter(|| ev.evaluate_many(&faces, &us, &vs).unwrap()),
+    );
+    ev.set_threads(0);
+    c.bench_function(
+        &format!("evaluate {n} random points, all cores, {label}"),
+        |b| b.iter(|| ev.evaluate_many(&faces, &us, &vs).unwrap()),
+    );
 
     c.bench_function(&format!("vertex limit stencils, {label}"), |b| {
         b.iter(|| limit_stencils(mesh, &options).unwrap())

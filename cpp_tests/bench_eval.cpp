@@ -10,6 +10,10 @@
 //     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
 //     (points in random order, and grouped by face), vs Far::PatchTable + PatchMap.
 //     Build times (evaluator, factory, adaptive refinement + patch table) reported apart.
+//     Position update for the same topology: profsubd_evaluator_update_positions vs Far's
+//     refinement + local-point stencils in one double-precision table
+//     (StencilTableReal<double>::UpdateValues, the loop Osd::CpuEvaluator::EvalStencils runs;
+//     Osd's evaluators take floats in 3.5), each ending with every patch point computed.
 // P2: uniform refinement to level 3, topology + positions: profsubd_refine_uniform vs
 //     Far::TopologyRefiner::RefineUniform + PrimvarRefinerReal<double>::Interpolate
 //     (TopologyRefiner construction included on both sides), time and peak memory (each run
@@ -28,6 +32,7 @@
 #include <opensubdiv/far/patchMap.h>
 #include <opensubdiv/far/patchTable.h>
 #include <opensubdiv/far/patchTableFactory.h>
+#include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
 #include <sys/resource.h>
@@ -39,6 +44,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <thread>
 
 using namespace OpenSubdiv;
 using Clock = std::chrono::steady_clock;
@@ -229,12 +235,18 @@ int main(int argc, char **argv) {
         if (ev) profsubd_evaluator_free(ev);
         profsubd_evaluator_new(mesh.get(), opts, &ev);
     });
-    double t_eval_ps = best(3, [&] {
+    auto eval_ps = [&] {
         profsubd_status st = profsubd_evaluator_evaluate(ev, faces.data(), us.data(), vs.data(), N, P.data(),
                                                          DU.data(), DV.data());
         if (st != PROFSUBD_OK) std::fprintf(stderr, "evaluate: %s\n", profsubd_last_error_message());
-    });
+    };
+    profsubd_evaluator_set_threads(ev, 0);
+    double t_eval_ps_all = best(3, eval_ps);
+    std::vector<double> Pall = P;
+    profsubd_evaluator_set_threads(ev, 1);
+    double t_eval_ps = best(3, eval_ps);
     std::vector<double> Pps = P;
+    bool same_all = std::equal(Pall.begin(), Pall.end(), Pps.begin());
     checksum += P[0];
 
     // --- P1: Bfr with its cache.
@@ -318,6 +330,45 @@ int main(int argc, char **argv) {
     });
     checksum += P[6];
 
+    // --- Position update: new control points through the same topology.
+    std::vector<double> moved(shape.positions.size());
+    for (size_t i = 0; i < moved.size(); ++i) moved[i] = 1.01 * shape.positions[i] + 0.001 * (i % 7);
+    const size_t nv = shape.num_vertices();
+    double t_update_ps = 1e300;
+    for (int rep = 0; rep < 5; ++rep) {
+        const std::vector<double> &x = rep % 2 ? shape.positions : moved;
+        t_update_ps = std::min(t_update_ps, best(1, [&] {
+            if (profsubd_evaluator_update_positions(ev, x.data(), nv) != PROFSUBD_OK)
+                std::fprintf(stderr, "update: %s\n", profsubd_last_error_message());
+        }));
+    }
+    std::unique_ptr<Far::StencilTableReal<double> const> stencils;
+    {
+        Far::PatchTableFactory::Options po;
+        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+        po.SetPatchPrecision<double>();
+        auto r = profsubd_test::build_refiner(shape);
+        r->RefineAdaptive(po.GetRefineAdaptiveOptions());
+        std::unique_ptr<Far::PatchTable> t(Far::PatchTableFactory::Create(*r, po));
+        Far::StencilTableFactoryReal<double>::Options so;
+        so.generateIntermediateLevels = true;
+        std::unique_ptr<Far::StencilTableReal<double> const> refinement(
+            Far::StencilTableFactoryReal<double>::Create(*r, so));
+        stencils.reset(Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(
+            *r, refinement.get(), t->GetLocalPointStencilTable<double>()));
+    }
+    std::vector<profsubd_test::FarPoint> src(nv), dst(stencils->GetNumStencils());
+    double t_update_far = 1e300;
+    for (int rep = 0; rep < 5; ++rep) {
+        const std::vector<double> &x = rep % 2 ? shape.positions : moved;
+        t_update_far = std::min(t_update_far, best(1, [&] {
+            for (size_t v = 0; v < nv; ++v)
+                for (int d = 0; d < 3; ++d) src[v].p[d] = x[3 * v + d];
+            stencils->UpdateValues(src.data(), dst.data());
+        }));
+    }
+    checksum += dst.back().p[0];
+
     std::printf("\nP1: %d random (face,u,v), position + du + dv (best of 3 runs, single thread)\n", N);
     std::printf("  profsubd evaluator:      build %8.1f ms   evaluate %8.1f ms  (%6.1f ns/point)\n", 1e3 * t_build_ps,
                 1e3 * t_eval_ps, 1e9 * t_eval_ps / N);
@@ -333,6 +384,14 @@ int main(int argc, char **argv) {
     std::printf("  ratio profsubd/Far PatchTable:       evaluate %.3f   build+evaluate %.3f\n", t_eval_ps / t_eval_far,
                 (t_build_ps + t_eval_ps) / (t_build_far + t_eval_far));
     std::printf("  max |profsubd - Bfr| over all coordinates: %.3g\n", maxdiff);
+    std::printf("\nAll cores (%u): profsubd evaluate %8.1f ms, speed-up %.2f over one thread, results %s\n",
+                std::thread::hardware_concurrency(), 1e3 * t_eval_ps_all, t_eval_ps / t_eval_ps_all,
+                same_all ? "bit-identical" : "DIFFERENT");
+    std::printf("\nPosition update, same topology (best of 5, alternating two position sets)\n");
+    std::printf("  profsubd_evaluator_update_positions:       %8.2f ms\n", 1e3 * t_update_ps);
+    std::printf("  Far refinement + local-point stencils:     %8.2f ms  (%d stencils, double)\n", 1e3 * t_update_far,
+                stencils->GetNumStencils());
+    std::printf("  ratio profsubd/OpenSubdiv position update: %.3f\n", t_update_ps / t_update_far);
 
     std::printf("(checksum %g)\n", checksum);
 

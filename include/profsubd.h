@@ -316,8 +316,9 @@ typedef enum profsubd_osd_hazard {
 } profsubd_osd_hazard;
 
 /**
- * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
- * immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
+ * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque; safe
+ * to share between threads for evaluation; `profsubd_evaluator_update_positions` replaces
+ * the control points' positions, keeping the topology). Create with `profsubd_evaluator_new`, release
  * with `profsubd_evaluator_free`.
  *
  * Points are `(face, u, v)` with OpenSubdiv's Ptex parameterization: on a mesh of quads,
@@ -749,6 +750,32 @@ enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options 
 enum profsubd_status profsubd_evaluator_new(const struct profsubd_mesh *mesh,
                                             const struct profsubd_options *options,
                                             struct profsubd_evaluator **out);
+
+/**
+ * Replace the control points' positions: `xyz` holds `3 * n` doubles (x y z per control
+ * vertex, in vertex order), `n` the mesh's vertex count. The evaluator then gives exactly
+ * (bit for bit) what one built with these positions gives, for the cost of running its
+ * stored stencils rather than a build: the topology (patches, refined neighbourhoods) is
+ * kept. Not concurrently with other calls on the same evaluator.
+ *
+ * Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for `n` not the mesh's vertex count or a
+ * non-finite coordinate, `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator` or `xyz`.
+ * The evaluator is unchanged on error.
+ */
+enum profsubd_status profsubd_evaluator_update_positions(struct profsubd_evaluator *evaluator,
+                                                         const double *xyz,
+                                                         size_t n);
+
+/**
+ * Set how many threads `profsubd_evaluator_evaluate`, `profsubd_evaluator_evaluate_points`
+ * and `profsubd_evaluator_update_positions` use: `threads` = 0 (the default) for all cores,
+ * 1 for the calling thread only. Results are bit for bit the same for every setting. Not
+ * concurrently with other calls on the same evaluator.
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator`.
+ */
+enum profsubd_status profsubd_evaluator_set_threads(struct profsubd_evaluator *evaluator,
+                                                    size_t threads);
 
 /**
  * Release an evaluator (NULL is a no-op).

@@ -13,19 +13,29 @@
 //! vertex's exact limit. Derivatives are with respect to the Ptex face's `(u, v)`: a leaf at
 //! depth `d` is scaled by `2^d`.
 //!
-//! Evaluation allocates nothing except below [`CACHE_DEPTH`]; the evaluator is immutable and
-//! `Sync`, so many threads may evaluate at once.
+//! The build looks at topology only: every point a patch or a deep fragment needs is
+//! recorded as the weighted sum refinement computes it with (module `points`), and the
+//! positions are run through that program afterwards — at construction, and again by
+//! [`Evaluator::set_positions`], which gives bit for bit the evaluator built with the new
+//! positions.
+//!
+//! Evaluation allocates nothing except below [`CACHE_DEPTH`]; the evaluator is immutable
+//! while evaluating and `Sync`, so many threads may evaluate at once.
+
+use glam::DVec3;
 
 use super::bspline::BicubicPatch;
 use super::domain::Domain;
-use super::patch_regular::regular_patch;
+use super::patch_regular::{regular_patch, regular_patch_points, PatchPoints, NO_POINT};
 use super::patch_topology::Neighbourhood;
+use super::points::PointProgram;
 use super::ptex::PtexFaces;
 use super::sample::LimitSample;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
-use crate::refine::refine_uniform_ranked;
+use crate::refine::step::refine_last;
+use crate::refine::{interpolate, refine, Primvar, VertexOrder};
 use crate::topology::Level;
 
 /// Depth to which irregular faces are refined and cached at construction.
@@ -67,8 +77,33 @@ pub struct Evaluator {
     /// access less per evaluation).
     roots: Vec<Node>,
     nodes: Vec<Node>,
+    /// The leaves, from `patch_points` and the current positions.
     patches: Vec<BicubicPatch>,
-    deep: Vec<Neighbourhood>,
+    /// Each leaf's control points as points of `program`.
+    patch_points: Vec<PatchPoints>,
+    deep: Vec<DeepFragment>,
+    /// Every point the leaves and deep fragments read, over the control points.
+    program: PointProgram,
+    /// Threads for batches of points (0: all cores).
+    threads: usize,
+}
+
+/// A fragment refined on demand at evaluation (a [`Node::Deep`]).
+#[derive(Debug, Clone)]
+struct DeepFragment {
+    nb: Neighbourhood,
+    /// Each vertex as a point of the evaluator's program.
+    points: Vec<u32>,
+    /// Each vertex's position under the current positions.
+    positions: Vec<DVec3>,
+}
+
+/// Level `d` of the fragment around a control face that repeats a vertex, refined as a whole
+/// (see [`Evaluator::build_from_root`]).
+struct RootLevel {
+    level: Level,
+    nb: Neighbourhood,
+    points: Vec<u32>,
 }
 
 impl Evaluator {
@@ -78,8 +113,17 @@ impl Evaluator {
     /// Errors: [`Error::InvalidMesh`] when the mesh has more parametric faces than fit in
     /// `u32`; errors of the refinement of an irregular neighbourhood.
     pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
+        let mut ev = Evaluator::topology(mesh, options)?;
+        ev.update(mesh.positions());
+        Ok(ev)
+    }
+
+    /// The structure of the evaluator of `mesh`: quadtrees, patches and deep fragments as
+    /// points of the program, no positions yet.
+    fn topology(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
         let ptex = PtexFaces::new(mesh)?;
         let global = Neighbourhood::from_mesh(mesh, options);
+        let control: Vec<u32> = (0..mesh.num_vertices() as u32).collect();
         let no_surface = faces_without_surface(mesh, options);
         let mut ev = Evaluator {
             mesh: mesh.clone(),
@@ -88,7 +132,10 @@ impl Evaluator {
             roots: Vec::new(),
             nodes: Vec::new(),
             patches: Vec::new(),
+            patch_points: Vec::new(),
             deep: Vec::new(),
+            program: PointProgram::new(mesh.num_vertices()),
+            threads: 0,
         };
         ev.roots.reserve(ev.ptex.len());
         for (f, &size) in mesh.face_sizes().iter().enumerate() {
@@ -99,31 +146,97 @@ impl Evaluator {
                 }
                 continue;
             }
-            let around = global.around_face(f as u32);
+            let (around, points) = global.around_face(f as u32);
             if around.has_face_repeating_a_vertex() {
-                let root = around.to_mesh(options);
-                let mut levels = vec![around];
+                let level = around.level(options);
+                let mut levels = vec![RootLevel {
+                    level,
+                    nb: around,
+                    points,
+                }];
                 for k in 0..(if size == 4 { 1 } else { size }) {
                     let node = if size == 4 {
-                        ev.build_from_root(&root, &mut levels, 0, 0)?
+                        ev.build_from_root(&mut levels, 0, 0)?
                     } else {
-                        ev.build_from_root(&root, &mut levels, 1, k)?
+                        ev.build_from_root(&mut levels, 1, k)?
                     };
                     ev.roots.push(node);
                 }
             } else if size == 4 {
-                let node = ev.build(&global, f as u32, 0)?;
+                let node = ev.build(&global, &control, f as u32, 0)?;
                 ev.roots.push(node);
             } else {
                 // A non-quad's sub-faces are its children after one refinement, in corner order.
-                let refined = refine_once(&around, options)?;
+                let (refined, refined_points) = ev.refine_recorded(&around, &points);
                 for k in 0..size {
-                    let node = ev.build(&refined, k, 1)?;
+                    let node = ev.build(&refined, &refined_points, k, 1)?;
                     ev.roots.push(node);
                 }
             }
         }
+        let mut roots: Vec<&mut [u32]> = ev
+            .patch_points
+            .iter_mut()
+            .map(|p| &mut p.vertices[..])
+            .collect();
+        roots.extend(ev.deep.iter_mut().map(|d| &mut d.points[..]));
+        ev.program.prune(&mut roots);
         Ok(ev)
+    }
+
+    /// Replace the control points' positions (one per control vertex, in vertex order): the
+    /// evaluator then evaluates exactly as one built from the mesh with these positions (bit
+    /// for bit), at the cost of a pass over its points rather than a build.
+    ///
+    /// Errors ([`Error::InvalidArgument`]; the evaluator is unchanged): not one position per
+    /// control vertex, a non-finite coordinate.
+    pub fn set_positions(&mut self, positions: &[DVec3]) -> Result<()> {
+        let nv = self.mesh.num_vertices();
+        if positions.len() != nv {
+            return Err(Error::invalid_argument(format!(
+                "{} positions given for a mesh of {nv} vertices",
+                positions.len()
+            )));
+        }
+        if let Some((i, p)) = positions.iter().enumerate().find(|(_, p)| !p.is_finite()) {
+            return Err(Error::invalid_argument(format!(
+                "position {i} has a non-finite coordinate ({} {} {})",
+                p.x, p.y, p.z
+            )));
+        }
+        self.update(positions);
+        self.mesh = self.mesh.with_positions(positions);
+        Ok(())
+    }
+
+    /// Patches and deep fragments from `positions` (checked).
+    fn update(&mut self, positions: &[DVec3]) {
+        let values = self.program.run(positions);
+        let points = &self.patch_points;
+        self.patches = super::parallel::map(points.len(), self.threads, |i| {
+            points[i].patch(|v| values[v as usize])
+        });
+        for d in &mut self.deep {
+            d.positions = d.points.iter().map(|&p| values[p as usize]).collect();
+        }
+    }
+
+    /// Set how many threads batches of points ([`Evaluator::evaluate_many`],
+    /// [`Evaluator::evaluate_points`]) and position updates run on: 0 (the default) for all
+    /// cores. The results do not depend on it, bit for bit.
+    pub fn set_threads(&mut self, threads: usize) {
+        self.threads = threads;
+    }
+
+    /// The thread setting ([`Evaluator::set_threads`]; 0: all cores).
+    pub fn threads(&self) -> usize {
+        self.threads
+    }
+
+    /// Number of points the evaluator computes from the control points (control points
+    /// included) on each [`Evaluator::set_positions`].
+    pub fn num_points(&self) -> usize {
+        self.program.num_points()
     }
 
     /// The options this evaluator applies.
@@ -146,70 +259,106 @@ impl Evaluator {
         self.ptex.len()
     }
 
-    fn leaf(&mut self, p: BicubicPatch) -> Node {
-        self.patches.push(p);
-        Node::Patch((self.patches.len() - 1) as u32)
+    /// A leaf whose control points are vertices of a fragment whose vertices are `points`.
+    fn leaf(&mut self, p: PatchPoints, points: &[u32]) -> Node {
+        self.patch_points.push(PatchPoints {
+            vertices: p.vertices.map(|v| {
+                if v == NO_POINT {
+                    NO_POINT
+                } else {
+                    points[v as usize]
+                }
+            }),
+            boundary: p.boundary,
+        });
+        Node::Patch((self.patch_points.len() - 1) as u32)
+    }
+
+    /// A deep node for fragment `nb` whose vertices are `points`.
+    fn deep_node(&mut self, nb: Neighbourhood, points: Vec<u32>) -> Node {
+        self.deep.push(DeepFragment {
+            nb,
+            points,
+            positions: Vec::new(),
+        });
+        Node::Deep((self.deep.len() - 1) as u32)
+    }
+
+    /// One level of refinement of `nb` (whose vertices are `points`), the child's points
+    /// recorded in the program.
+    fn refine_recorded(&mut self, nb: &Neighbourhood, points: &[u32]) -> (Neighbourhood, Vec<u32>) {
+        let level = nb.level(&self.options);
+        let r = refine_last(&level, VertexOrder::VerticesFirst);
+        let child_points = self.program.record(&level, &r, points);
+        (nb.refined(&level, &r), child_points)
     }
 
     /// The node for face `f` of `nb` (a fragment holding the faces around `f`, or more; the
-    /// patch test only looks at `f`'s corners, whatever else the fragment holds), refined
-    /// down to [`CACHE_DEPTH`]. The fragment around `f` is cut out only when `f` is not
-    /// regular: most children of a refined face are, and the cut costs more than the test.
-    fn build(&mut self, nb: &Neighbourhood, f: u32, depth: u32) -> Result<Node> {
-        if let Some(p) = regular_patch(nb, f, &self.options) {
-            return Ok(self.leaf(p));
+    /// patch test only looks at `f`'s corners, whatever else the fragment holds; its vertices
+    /// are `points`), refined down to [`CACHE_DEPTH`]. The fragment around `f` is cut out
+    /// only when `f` is not regular: most children of a refined face are, and the cut costs
+    /// more than the test.
+    fn build(&mut self, nb: &Neighbourhood, points: &[u32], f: u32, depth: u32) -> Result<Node> {
+        if let Some(p) = regular_patch_points(nb, f, &self.options) {
+            return Ok(self.leaf(p, points));
         }
-        let nb = nb.around_face(f);
+        let (nb, globals) = nb.around_face(f);
+        let points: Vec<u32> = globals.iter().map(|&g| points[g as usize]).collect();
         if depth >= CACHE_DEPTH {
-            self.deep.push(nb);
-            return Ok(Node::Deep((self.deep.len() - 1) as u32));
+            return Ok(self.deep_node(nb, points));
         }
-        let refined = refine_once(&nb, &self.options)?;
+        let (refined, refined_points) = self.refine_recorded(&nb, &points);
         let first = self.nodes.len() as u32;
         self.nodes.extend([Node::NoSurface; 4]);
         for q in 0..4u32 {
-            let child = self.build(&refined, q, depth + 1)?;
+            let child = self.build(&refined, &refined_points, q, depth + 1)?;
             self.nodes[(first + q) as usize] = child;
         }
         Ok(Node::Split(first))
     }
 
-    /// Like [`Evaluator::build`] for face `index` of level `depth` of `root` (whose face 0 is
-    /// the control face), when `root` holds a face that repeats a vertex. Refining such a
-    /// face makes two distinct edges join the same two vertices, which a re-extracted
-    /// fragment would merge; so every level is refined from `root` itself (`levels[d]` =
-    /// `root` refined `d` times, computed on first use), down to [`DEGENERATE_DEPTH`].
-    /// Deeper nodes (or all nodes below the depth where the fragment would pass
-    /// [`DEGENERATE_BUDGET`] faces) are refined level by level like the others, which is
-    /// exact unless the point is within `2^-depth` of a corner next to the repeated vertex.
+    /// Like [`Evaluator::build`] for face `index` of level `depth` of `levels[0]` (whose
+    /// face 0 is the control face), when that fragment holds a face that repeats a vertex.
+    /// Refining such a face makes two distinct edges join the same two vertices, which a
+    /// re-extracted fragment would merge; so every level is the refinement of the previous
+    /// level as a whole (`levels[d]` = `levels[0]` refined `d` times, computed on first
+    /// use), down to [`DEGENERATE_DEPTH`]. Deeper nodes (or all nodes below the depth where
+    /// the fragment would pass [`DEGENERATE_BUDGET`] faces) are refined level by level like
+    /// the others, which is exact unless the point is within `2^-depth` of a corner next to
+    /// the repeated vertex.
     fn build_from_root(
         &mut self,
-        root: &Mesh,
-        levels: &mut Vec<Neighbourhood>,
+        levels: &mut Vec<RootLevel>,
         depth: u32,
         index: u32,
     ) -> Result<Node> {
         while levels.len() <= depth as usize {
-            let ranks = levels[0].face_ranks();
-            let refined = refine_uniform_ranked(root, &self.options, levels.len() as u32, ranks)?;
-            let parent = &levels[levels.len() - 1];
-            levels.push(Neighbourhood::refined_from(parent, refined));
+            let last = &levels[levels.len() - 1];
+            let r = refine(&last.level, VertexOrder::VerticesFirst);
+            let points = self.program.record(&last.level, &r, &last.points);
+            let nb = last.nb.refined(&last.level, &r);
+            levels.push(RootLevel {
+                level: r.child,
+                nb,
+                points,
+            });
         }
-        let nb = levels[depth as usize].around_face(index);
-        if let Some(p) = regular_patch(&nb, 0, &self.options) {
-            return Ok(self.leaf(p));
+        let here = &levels[depth as usize];
+        let (nb, globals) = here.nb.around_face(index);
+        let points: Vec<u32> = globals.iter().map(|&g| here.points[g as usize]).collect();
+        if let Some(p) = regular_patch_points(&nb, 0, &self.options) {
+            return Ok(self.leaf(p, &points));
         }
-        let next_size = levels[depth as usize].num_faces() * 4;
+        let next_size = here.nb.num_faces() * 4;
         if depth >= DEGENERATE_DEPTH
             || (levels.len() <= depth as usize + 1 && next_size > DEGENERATE_BUDGET)
         {
-            self.deep.push(nb);
-            return Ok(Node::Deep((self.deep.len() - 1) as u32));
+            return Ok(self.deep_node(nb, points));
         }
         let first = self.nodes.len() as u32;
         self.nodes.extend([Node::NoSurface; 4]);
         for q in 0..4u32 {
-            let child = self.build_from_root(root, levels, depth + 1, index * 4 + q)?;
+            let child = self.build_from_root(levels, depth + 1, index * 4 + q)?;
             self.nodes[(first + q) as usize] = child;
         }
         Ok(Node::Split(first))
@@ -247,7 +396,10 @@ impl Evaluator {
                     node = self.nodes[(first + q) as usize];
                     (s, t, scale) = (cs, ct, scale * 2.0);
                 }
-                Node::Deep(d) => return self.evaluate_deep(&self.deep[d as usize], s, t, scale),
+                Node::Deep(d) => {
+                    let d = &self.deep[d as usize];
+                    return self.evaluate_deep(&d.nb, &d.positions, s, t, scale);
+                }
                 Node::NoSurface => return Err(self.no_surface_error(face)),
             }
         }
@@ -278,7 +430,7 @@ impl Evaluator {
     /// first bad point, naming its index; a point without limit surface is a bad point here
     /// (see [`Evaluator::evaluate_points`] for the marking alternative).
     pub fn evaluate_many(&self, faces: &[u32], u: &[f64], v: &[f64]) -> Result<Vec<LimitSample>> {
-        each_point(faces, u, v, |f, u, v| self.evaluate(f, u, v))
+        each_point(faces, u, v, self.threads, |f, u, v| self.evaluate(f, u, v))
     }
 
     /// Whether parametric (Ptex) face `face` has a limit surface (see [`super::surface`]);
@@ -326,7 +478,9 @@ impl Evaluator {
         u: &[f64],
         v: &[f64],
     ) -> Result<Vec<Option<LimitSample>>> {
-        each_point(faces, u, v, |f, u, v| self.evaluate_in(domain, f, u, v))
+        each_point(faces, u, v, self.threads, |f, u, v| {
+            self.evaluate_in(domain, f, u, v)
+        })
     }
 
     /// Exact limit position and derivatives at every control vertex, in vertex order, `None`
@@ -341,13 +495,21 @@ impl Evaluator {
             .collect())
     }
 
-    /// Refine `nb` on the spot until `(s, t)` lies in a regular sub-patch.
-    fn evaluate_deep(&self, nb: &Neighbourhood, s: f64, t: f64, scale: f64) -> Result<LimitSample> {
+    /// Refine `nb` (vertex positions `positions`) on the spot until `(s, t)` lies in a
+    /// regular sub-patch.
+    fn evaluate_deep(
+        &self,
+        nb: &Neighbourhood,
+        positions: &[DVec3],
+        s: f64,
+        t: f64,
+        scale: f64,
+    ) -> Result<LimitSample> {
         let mut owned;
-        let mut nb = nb;
+        let (mut nb, mut positions) = (nb, positions);
         let (mut s, mut t, mut scale) = (s, t, scale);
         for _ in CACHE_DEPTH..MAX_DEPTH {
-            if let Some(p) = regular_patch(nb, 0, &self.options) {
+            if let Some(p) = regular_patch(nb, 0, &self.options, positions) {
                 let (position, ds, dt) = p.evaluate(s, t);
                 return Ok(LimitSample {
                     position,
@@ -357,33 +519,42 @@ impl Evaluator {
             }
             if let Some(k) = corner_at(s, t) {
                 if let Some(sample) =
-                    super::patch_corner::corner_limit(nb, k, &self.options, scale)?
+                    super::patch_corner::corner_limit(nb, positions, k, &self.options, scale)?
                 {
                     return Ok(sample);
                 }
             }
-            let refined = refine_once(nb, &self.options)?;
+            let (refined, refined_positions) = refine_fragment(nb, positions, &self.options);
             let (q, cs, ct) = quadrant(s, t);
-            owned = refined.around_face(q);
-            nb = &owned;
+            let (cut, globals) = refined.around_face(q);
+            let cut_positions: Vec<DVec3> = globals
+                .iter()
+                .map(|&g| refined_positions[g as usize])
+                .collect();
+            owned = (cut, cut_positions);
+            (nb, positions) = (&owned.0, &owned.1);
             (s, t, scale) = (cs, ct, scale * 2.0);
         }
         let k = nearest_corner(s, t);
-        super::patch_corner::corner_limit(nb, k, &self.options, scale)?.ok_or_else(|| {
-            Error::NumericalFailure(format!(
-                "no regular sub-patch within {MAX_DEPTH} levels of refinement"
-            ))
-        })
+        super::patch_corner::corner_limit(nb, positions, k, &self.options, scale)?.ok_or_else(
+            || {
+                Error::NumericalFailure(format!(
+                    "no regular sub-patch within {MAX_DEPTH} levels of refinement"
+                ))
+            },
+        )
     }
 }
 
-/// `eval(faces[i], u[i], v[i])` for every point; the three lists must have the same length.
-/// An [`Error::InvalidArgument`] names the point.
-fn each_point<T>(
+/// `eval(faces[i], u[i], v[i])` for every point, on `threads` threads (0: all cores); the
+/// three lists must have the same length. An [`Error::InvalidArgument`] names the point (the
+/// first bad one, whatever the thread count).
+fn each_point<T: Send>(
     faces: &[u32],
     u: &[f64],
     v: &[f64],
-    eval: impl Fn(u32, f64, f64) -> Result<T>,
+    threads: usize,
+    eval: impl Fn(u32, f64, f64) -> Result<T> + Sync,
 ) -> Result<Vec<T>> {
     if faces.len() != u.len() || faces.len() != v.len() {
         return Err(Error::invalid_argument(format!(
@@ -393,24 +564,25 @@ fn each_point<T>(
             v.len()
         )));
     }
-    (0..faces.len())
-        .map(|i| {
-            eval(faces[i], u[i], v[i]).map_err(|e| match e {
-                Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
-                other => other,
-            })
+    super::parallel::try_map(faces.len(), threads, |i| {
+        eval(faces[i], u[i], v[i]).map_err(|e| match e {
+            Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
+            other => other,
         })
-        .collect()
+    })
 }
 
-/// One level of refinement of a neighbourhood; the children of its face 0 are faces
-/// `0..n` of the result (Far's child order).
-fn refine_once(nb: &Neighbourhood, options: &SubdivOptions) -> Result<Neighbourhood> {
-    let mesh = nb.to_mesh(options);
-    Ok(Neighbourhood::refined_from(
-        nb,
-        refine_uniform_ranked(&mesh, options, 1, nb.face_ranks())?,
-    ))
+/// One level of refinement of fragment `nb` with vertex data `values`; the children of its
+/// face 0 are faces `0..n` of the result (Far's child order).
+fn refine_fragment<T: Primvar>(
+    nb: &Neighbourhood,
+    values: &[T],
+    options: &SubdivOptions,
+) -> (Neighbourhood, Vec<T>) {
+    let level = nb.level(options);
+    let r = refine_last(&level, VertexOrder::VerticesFirst);
+    let child_values = interpolate(&level, &r, values);
+    (nb.refined(&level, &r), child_values)
 }
 
 /// The quadrant of `(s, t)` and the coordinates in it. Quadrant `q` is child `q` of a quad

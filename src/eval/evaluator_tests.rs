@@ -186,14 +186,15 @@ fn smooth_limit(refined: &Mesh, w: u32) -> DVec3 {
         crate::eval::patch_topology::Neighbourhood::from_mesh(refined, &SubdivOptions::default());
     let faces = nb.vertex_faces(w);
     assert_eq!(faces.len(), 4, "vertex {w} is not regular");
-    let mut sum = 16.0 * nb.position(w);
+    let p = refined.positions();
+    let mut sum = 16.0 * p[w as usize];
     for &g in faces {
         let face = nb.face(g);
         assert_eq!(face.len(), 4);
         let k = face.iter().position(|&x| x == w).unwrap();
         // Each edge end is seen from two faces: 4 · e counted as 2 · e twice.
-        sum += 2.0 * (nb.position(face[(k + 1) % 4]) + nb.position(face[(k + 3) % 4]));
-        sum += nb.position(face[(k + 2) % 4]);
+        sum += 2.0 * (p[face[(k + 1) % 4] as usize] + p[face[(k + 3) % 4] as usize]);
+        sum += p[face[(k + 2) % 4] as usize];
     }
     sum / 36.0_f64
 }

@@ -8,6 +8,8 @@
 //! sub-face's parameterization (interior vertices; at a boundary vertex the first face is
 //! the leading boundary face, see [`super::vertex_limit`] for the convention).
 
+use glam::DVec3;
+
 use super::patch_topology::Neighbourhood;
 use super::sample::LimitSample;
 use super::vertex_limit::limit_vertex_samples;
@@ -37,10 +39,12 @@ fn has_semi_sharpness(nb: &Neighbourhood, c: u32) -> bool {
     })
 }
 
-/// The exact limit at corner `k` of face 0 of `nb`, derivatives multiplied by `scale`;
-/// `None` while sharpness at the corner has not decayed (refine further).
+/// The exact limit at corner `k` of face 0 of `nb` (vertex positions `positions`),
+/// derivatives multiplied by `scale`; `None` while sharpness at the corner has not decayed
+/// (refine further).
 pub fn corner_limit(
     nb: &Neighbourhood,
+    positions: &[DVec3],
     k: usize,
     options: &SubdivOptions,
     scale: f64,
@@ -49,7 +53,7 @@ pub fn corner_limit(
     if has_semi_sharpness(nb, c) {
         return Ok(None);
     }
-    let samples = limit_vertex_samples(&nb.to_mesh(options), options)?;
+    let samples = limit_vertex_samples(&nb.to_mesh(options, positions), options)?;
     let s = samples[c as usize];
     Ok(Some(LimitSample {
         position: s.position,

@@ -358,8 +358,50 @@ const ACROSS_SLOTS: [(usize, usize); 4] = [(1, 2), (7, 11), (14, 13), (8, 4)];
 const DIAGONAL_SLOTS: [usize; 4] = [0, 3, 15, 12];
 const CORNER_SLOTS: [usize; 4] = [5, 6, 10, 9];
 
-/// The bicubic patch of face `f` when its limit surface is one, else `None`.
-pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Option<BicubicPatch> {
+/// The 16 control points of a regular patch as vertices of its fragment ([`NO_POINT`] for
+/// the points beyond a sharp side, which [`BicubicPatch::with_boundary`] replaces), and its
+/// sharp sides.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct PatchPoints {
+    /// Vertex of each control point, `points[4 * j + i]` as in [`BicubicPatch`].
+    pub vertices: [u32; 16],
+    /// The sides on an infinitely sharp edge.
+    pub boundary: BoundaryMask,
+}
+
+/// A control point a patch does not read (beyond a sharp side).
+pub const NO_POINT: u32 = u32::MAX;
+
+impl PatchPoints {
+    /// The patch with `value(v)` at each vertex `v` it reads (zero elsewhere, to be replaced
+    /// by phantom points).
+    #[inline]
+    pub fn patch(&self, value: impl Fn(u32) -> DVec3) -> BicubicPatch {
+        let pts = self
+            .vertices
+            .map(|v| if v == NO_POINT { DVec3::ZERO } else { value(v) });
+        BicubicPatch::with_boundary(pts, self.boundary)
+    }
+}
+
+/// The bicubic patch of face `f` with vertex positions `positions` when its limit surface is
+/// one, else `None`.
+pub fn regular_patch(
+    nb: &Neighbourhood,
+    f: u32,
+    options: &SubdivOptions,
+    positions: &[DVec3],
+) -> Option<BicubicPatch> {
+    regular_patch_points(nb, f, options).map(|p| p.patch(|v| positions[v as usize]))
+}
+
+/// Which vertices of `nb` define face `f`'s bicubic patch when its limit surface is one,
+/// else `None`.
+pub fn regular_patch_points(
+    nb: &Neighbourhood,
+    f: u32,
+    options: &SubdivOptions,
+) -> Option<PatchPoints> {
     let face = nb.face(f);
     if face.len() != 4 {
         return None;
@@ -380,11 +422,11 @@ pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Opt
         }
     }
     let mut boundary: BoundaryMask = 0;
-    let mut pts = [DVec3::ZERO; 16];
+    let mut pts = [NO_POINT; 16];
     for k in 0..4 {
         let (c, d) = (face[k], face[(k + 1) % 4]);
         let (star_c, star_d) = (&stars[k], &stars[(k + 1) % 4]);
-        pts[CORNER_SLOTS[k]] = nb.position(c);
+        pts[CORNER_SLOTS[k]] = c;
         let sharp = star_c
             .find(d)
             .map(|e| is_infinite(edge_sharpness(nb, c, e)))?;
@@ -394,8 +436,8 @@ pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Opt
         }
         let (_, at_c) = across(nb, star_c, f, c, d)?;
         let (_, at_d) = across(nb, star_d, f, d, c)?;
-        pts[ACROSS_SLOTS[k].0] = nb.position(at_c);
-        pts[ACROSS_SLOTS[k].1] = nb.position(at_d);
+        pts[ACROSS_SLOTS[k].0] = at_c;
+        pts[ACROSS_SLOTS[k].1] = at_d;
     }
     for k in 0..4 {
         if kinds[k] != CornerKind::Smooth {
@@ -410,7 +452,10 @@ pub fn regular_patch(nb: &Neighbourhood, f: u32, options: &SubdivOptions) -> Opt
             .find(|&&g| g != f && g != g_next && g != g_prev)?;
         let gf = nb.face(g);
         let i = gf.iter().position(|&x| x == c)?;
-        pts[DIAGONAL_SLOTS[k]] = nb.position(gf[(i + 2) % 4]);
+        pts[DIAGONAL_SLOTS[k]] = gf[(i + 2) % 4];
     }
-    Some(BicubicPatch::with_boundary(pts, boundary))
+    Some(PatchPoints {
+        vertices: pts,
+        boundary,
+    })
 }

@@ -23,16 +23,19 @@ use glam::DVec3;
 use crate::catmark::crease::is_semi_sharp;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts};
 use crate::options::{CreaseMethod, PartialOptions, SubdivOptions};
+use crate::refine::{corners_of, creases_of_child, Refinement};
+use crate::topology::{Level, Tags};
 
 /// Largest fragment whose vertices [`Neighbourhood::around_face`] renumbers through a table
 /// as long as the fragment; from a larger one (a whole control mesh, a deeply refined
 /// fragment) it uses a hash map rather than fill such a table for every face.
 const DENSE_REMAP_LIMIT: usize = 4096;
 
-/// A mesh fragment with the adjacency the evaluator's patch tests need.
+/// The topology of a mesh fragment with the adjacency the evaluator's patch tests need.
+/// Vertex data (positions, or the evaluator's point numbers) travel beside it, one value
+/// per vertex, mapped through [`Neighbourhood::around_face`]'s vertex list.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Neighbourhood {
-    pub(crate) positions: Vec<DVec3>,
     face_offsets: Vec<u32>,
     face_indices: Vec<u32>,
     vf_offsets: Vec<u32>,
@@ -58,76 +61,121 @@ pub struct Neighbourhood {
     face_ranks: Vec<u32>,
 }
 
-impl Neighbourhood {
-    /// The whole of `mesh`, to be cut into fragments for refinement under `options`.
-    pub fn from_mesh(mesh: &Mesh, options: &SubdivOptions) -> Neighbourhood {
-        let chaikin = options.crease_method == CreaseMethod::Chaikin;
-        Neighbourhood::from_owned_mesh(mesh.clone(), chaikin)
-    }
-
-    /// [`Neighbourhood::from_mesh`] taking the mesh's arrays instead of copying them.
-    fn from_owned_mesh(mesh: Mesh, chaikin: bool) -> Neighbourhood {
-        let mut edge_tags: Vec<((u32, u32), f32)> = mesh
-            .creases()
-            .iter()
-            .map(|c| {
-                let [a, b] = c.vertices;
-                ((a.min(b), a.max(b)), c.sharpness)
-            })
-            .collect();
-        // Far keeps the last value given for an edge; so do we (the sort is stable, and
-        // `dedup_by` keeps the first of a run, into which the later value is copied).
-        edge_tags.sort_by_key(|&(key, _)| key);
-        edge_tags.dedup_by(|later, first| {
-            let same = later.0 == first.0;
-            if same {
-                first.1 = later.1;
-            }
-            same
-        });
-        let mut vertex_tags = vec![0.0f32; mesh.num_vertices()];
-        for c in mesh.corners() {
-            vertex_tags[c.vertex as usize] = c.sharpness;
+/// Crease tags as a sorted list, one per edge: Far keeps the last value given for an edge,
+/// and so does this (the sort is stable, and `dedup_by` keeps the first of a run, into which
+/// the later value is copied).
+fn sorted_edge_tags(creases: &[Crease]) -> Vec<((u32, u32), f32)> {
+    let mut edge_tags: Vec<((u32, u32), f32)> = creases
+        .iter()
+        .map(|c| {
+            let [a, b] = c.vertices;
+            ((a.min(b), a.max(b)), c.sharpness)
+        })
+        .collect();
+    edge_tags.sort_by_key(|&(key, _)| key);
+    edge_tags.dedup_by(|later, first| {
+        let same = later.0 == first.0;
+        if same {
+            first.1 = later.1;
         }
+        same
+    });
+    edge_tags
+}
+
+/// Per-vertex corner sharpness of `nv` vertices from corner tags.
+fn vertex_tags_of(nv: usize, corners: &[Corner]) -> Vec<f32> {
+    let mut vertex_tags = vec![0.0f32; nv];
+    for c in corners {
+        vertex_tags[c.vertex as usize] = c.sharpness;
+    }
+    vertex_tags
+}
+
+impl Neighbourhood {
+    /// The whole of `mesh` (its topology and tags; vertex `v` is control vertex `v`), to be
+    /// cut into fragments for refinement under `options`.
+    pub fn from_mesh(mesh: &Mesh, options: &SubdivOptions) -> Neighbourhood {
         let nv = mesh.num_vertices();
-        let face_offsets = mesh.face_offsets().to_vec();
-        let face_ranks = (0..mesh.num_faces() as u32).collect();
-        let parts = mesh.into_parts();
         Neighbourhood {
-            chaikin,
-            face_ranks,
+            chaikin: options.crease_method == CreaseMethod::Chaikin,
+            face_ranks: (0..mesh.num_faces() as u32).collect(),
             ..Neighbourhood::assemble(
-                parts.positions,
-                face_offsets,
-                parts.face_indices,
-                edge_tags,
-                vertex_tags,
+                nv,
+                mesh.face_offsets().to_vec(),
+                mesh.face_indices().to_vec(),
+                sorted_edge_tags(mesh.creases()),
+                vertex_tags_of(nv, mesh.corners()),
                 vec![false; nv],
             )
         }
     }
 
-    /// `child`, the one-level refinement of `parent` (as a mesh, vertices in Far's default
-    /// order: children of vertices, of faces, then of edges), keeping track of which
-    /// vertices descend from edge points.
-    pub fn refined_from(parent: &Neighbourhood, child: Mesh) -> Neighbourhood {
-        let mut nb = Neighbourhood::from_owned_mesh(child, parent.chaikin);
-        let nv = parent.positions.len();
-        nb.edge_descendants[..nv].copy_from_slice(&parent.edge_descendants);
-        nb.edge_descendants[nv + parent.num_faces()..].fill(true);
+    /// This fragment as a base [`Level`] under `options`, its faces ranked as the whole mesh
+    /// ranks them, to be refined by [`crate::refine::refine`].
+    pub fn level(&self, options: &SubdivOptions) -> Level {
+        let creases = self.edge_tags.iter().map(|&((a, b), s)| ([a, b], s));
+        let corners = (0..self.num_vertices() as u32)
+            .map(|v| (v, self.vertex_tags[v as usize]))
+            .filter(|&(_, s)| s > 0.0);
+        let tags = Tags {
+            creases,
+            corners,
+            holes: &[],
+        };
+        Level::from_faces(
+            self.num_vertices(),
+            &self.face_offsets,
+            &self.face_indices,
+            tags,
+            options,
+            Some(&self.face_ranks),
+        )
+    }
+
+    /// The child of `self` after refinement `r` of `level` (a level of `self`: its
+    /// [`Neighbourhood::level`], or a refined level of the same fragment, as deep as `self`),
+    /// vertices in Far's default order (children of vertices, of faces, then of edges),
+    /// keeping track of which vertices descend from edge points. Tags are the child's
+    /// sharpness less what Far derives from topology, which a fragment read as a base level
+    /// derives again: the creases of sharp edge halves, the sharp vertices that their parent
+    /// vertex's topology did not sharpen.
+    pub fn refined(&self, level: &Level, r: &Refinement) -> Neighbourhood {
+        let child = &r.child;
+        let nv = child.num_vertices();
+        let boundary = level.options().boundary;
+        let sharpened = |cv: usize| {
+            r.child_vertex_parent_vertex(cv)
+                .is_some_and(|v| level.vertex_topology(v).is_sharpened(boundary))
+        };
+        let mut nb = Neighbourhood {
+            chaikin: self.chaikin,
+            face_ranks: vec![0; child.num_faces()],
+            ..Neighbourhood::assemble(
+                nv,
+                child.face_offsets.clone(),
+                child.face_verts.clone(),
+                sorted_edge_tags(&creases_of_child(level, r)),
+                vertex_tags_of(nv, &corners_of(child, sharpened)),
+                vec![false; nv],
+            )
+        };
+        let parent_nv = self.num_vertices();
+        nb.edge_descendants[..parent_nv].copy_from_slice(&self.edge_descendants);
+        nb.edge_descendants[parent_nv + self.num_faces()..].fill(true);
         // Far numbers the children of the faces in face order: those of a face come after
         // the children of every face ranked before it.
-        let mut by_rank: Vec<u32> = (0..parent.num_faces() as u32).collect();
-        by_rank.sort_unstable_by_key(|&f| parent.face_ranks[f as usize]);
-        let mut first_child = vec![0u32; parent.num_faces()];
+        let mut by_rank: Vec<u32> = (0..self.num_faces() as u32).collect();
+        by_rank.sort_unstable_by_key(|&f| self.face_ranks[f as usize]);
+        let mut first_child = vec![0u32; self.num_faces()];
         let mut next = 0u32;
         for &f in &by_rank {
             first_child[f as usize] = next;
-            next += parent.face(f).len() as u32;
+            next += self.face(f).len() as u32;
         }
         let mut c = 0;
-        for f in 0..parent.num_faces() as u32 {
-            for j in 0..parent.face(f).len() as u32 {
+        for f in 0..self.num_faces() as u32 {
+            for j in 0..self.face(f).len() as u32 {
                 nb.face_ranks[c] = first_child[f as usize] + j;
                 c += 1;
             }
@@ -141,14 +189,13 @@ impl Neighbourhood {
     }
 
     fn assemble(
-        positions: Vec<DVec3>,
+        nv: usize,
         face_offsets: Vec<u32>,
         face_indices: Vec<u32>,
         edge_tags: Vec<((u32, u32), f32)>,
         vertex_tags: Vec<f32>,
         edge_descendants: Vec<bool>,
     ) -> Neighbourhood {
-        let nv = positions.len();
         let mut vf_offsets = vec![0u32; nv + 1];
         for &v in &face_indices {
             vf_offsets[v as usize + 1] += 1;
@@ -168,7 +215,6 @@ impl Neighbourhood {
             }
         }
         Neighbourhood {
-            positions,
             face_offsets,
             face_indices,
             vf_offsets,
@@ -179,6 +225,11 @@ impl Neighbourhood {
             chaikin: false,
             face_ranks: Vec::new(),
         }
+    }
+
+    /// Number of vertices.
+    pub fn num_vertices(&self) -> usize {
+        self.vertex_tags.len()
     }
 
     /// Number of faces.
@@ -225,12 +276,6 @@ impl Neighbourhood {
         self.edge_descendants[v as usize]
     }
 
-    /// Position of vertex `v`.
-    #[inline]
-    pub fn position(&self, v: u32) -> DVec3 {
-        self.positions[v as usize]
-    }
-
     /// True when some face lists a vertex twice (degenerate faces of non-manifold inputs).
     pub fn has_face_repeating_a_vertex(&self) -> bool {
         (0..self.num_faces() as u32).any(|f| {
@@ -241,8 +286,9 @@ impl Neighbourhood {
 
     /// The faces sharing a vertex with face `f` (under Chaikin creasing also those around the
     /// far ends of semi-sharp edges at `f`'s corners), as a new fragment whose face 0 is `f`
-    /// and whose vertices 0..n are `f`'s vertices in order.
-    pub fn around_face(&self, f: u32) -> Neighbourhood {
+    /// and whose vertices 0..n are `f`'s vertices in order, with the vertex of `self` each
+    /// of its vertices is.
+    pub fn around_face(&self, f: u32) -> (Neighbourhood, Vec<u32>) {
         let mut faces: Vec<u32> = vec![f];
         let corners = self.face(f);
         for &v in corners {
@@ -268,11 +314,10 @@ impl Neighbourhood {
         }
         // Local index of each vertex of `self` (u32::MAX: not yet in the fragment), in a table
         // when `self` is a small fragment, else in a hash map.
-        let dense = self.positions.len() <= DENSE_REMAP_LIMIT;
-        let mut remap = vec![u32::MAX; if dense { self.positions.len() } else { 0 }];
+        let dense = self.num_vertices() <= DENSE_REMAP_LIMIT;
+        let mut remap = vec![u32::MAX; if dense { self.num_vertices() } else { 0 }];
         let mut sparse: HashMap<u32, u32> = HashMap::new();
         let mut globals: Vec<u32> = Vec::with_capacity(faces.len() * 2 + 4);
-        let mut positions = Vec::with_capacity(faces.len() * 2 + 4);
         let mut vertex_tags = Vec::with_capacity(faces.len() * 2 + 4);
         let mut edge_descendants = Vec::with_capacity(faces.len() * 2 + 4);
         let mut face_offsets = Vec::with_capacity(faces.len() + 1);
@@ -288,14 +333,13 @@ impl Neighbourhood {
                 let local = if known != u32::MAX {
                     known
                 } else {
-                    let local = positions.len() as u32;
+                    let local = globals.len() as u32;
                     if dense {
                         remap[v as usize] = local;
                     } else {
                         sparse.insert(v, local);
                     }
                     globals.push(v);
-                    positions.push(self.positions[v as usize]);
                     vertex_tags.push(self.vertex_tags[v as usize]);
                     edge_descendants.push(self.edge_descendants[v as usize]);
                     local
@@ -320,18 +364,19 @@ impl Neighbourhood {
             edge_tags.sort_unstable_by_key(|&(key, _)| key);
             edge_tags.dedup_by_key(|&mut (key, _)| key);
         }
-        Neighbourhood {
+        let nb = Neighbourhood {
             chaikin: self.chaikin,
             face_ranks: faces.iter().map(|&g| self.face_ranks[g as usize]).collect(),
             ..Neighbourhood::assemble(
-                positions,
+                globals.len(),
                 face_offsets,
                 face_indices,
                 edge_tags,
                 vertex_tags,
                 edge_descendants,
             )
-        }
+        };
+        (nb, globals)
     }
 
     /// Append the faces around `v` that `faces` does not hold yet.
@@ -343,10 +388,10 @@ impl Neighbourhood {
         }
     }
 
-    /// This fragment as a [`Mesh`] with `options` attached, to be refined. Not validated
-    /// again: a fragment is cut from a valid mesh (its faces, and only the tags of its own
-    /// edges), which `from_parts` accepts (checked in debug builds).
-    pub fn to_mesh(&self, options: &SubdivOptions) -> Mesh {
+    /// This fragment with `positions` (one per vertex) as a [`Mesh`] with `options`
+    /// attached. Not validated again: a fragment is cut from a valid mesh (its faces, and
+    /// only the tags of its own edges), which `from_parts` accepts (checked in debug builds).
+    pub fn to_mesh(&self, options: &SubdivOptions, positions: &[DVec3]) -> Mesh {
         let creases: Vec<Crease> = self
             .edge_tags
             .iter()
@@ -367,7 +412,7 @@ impl Neighbourhood {
             .collect();
         let face_sizes = self.face_offsets.windows(2).map(|w| w[1] - w[0]).collect();
         let parts = MeshParts {
-            positions: self.positions.clone(),
+            positions: positions.to_vec(),
             face_sizes,
             face_indices: self.face_indices.clone(),
             creases,

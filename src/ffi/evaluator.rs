@@ -2,6 +2,8 @@
 
 use std::mem::MaybeUninit;
 
+use glam::DVec3;
+
 use crate::eval::{require_surface, Domain, Evaluator, LimitSample};
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle::{self, Handle};
@@ -11,8 +13,9 @@ use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::{arg_out, arg_slice, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
 
-/// An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque,
-/// immutable, safe to share between threads). Create with `profsubd_evaluator_new`, release
+/// An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque; safe
+/// to share between threads for evaluation; `profsubd_evaluator_update_positions` replaces
+/// the control points' positions, keeping the topology). Create with `profsubd_evaluator_new`, release
 /// with `profsubd_evaluator_free`.
 ///
 /// Points are `(face, u, v)` with OpenSubdiv's Ptex parameterization: on a mesh of quads,
@@ -52,6 +55,54 @@ pub unsafe extern "C" fn profsubd_evaluator_new(
         let opts = resolve(options, m)?;
         let ev = Evaluator::new(m, &opts)?;
         out.write(handle::into_raw(ev));
+        Ok(())
+    })
+}
+
+/// Replace the control points' positions: `xyz` holds `3 * n` doubles (x y z per control
+/// vertex, in vertex order), `n` the mesh's vertex count. The evaluator then gives exactly
+/// (bit for bit) what one built with these positions gives, for the cost of running its
+/// stored stencils rather than a build: the topology (patches, refined neighbourhoods) is
+/// kept. Not concurrently with other calls on the same evaluator.
+///
+/// Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for `n` not the mesh's vertex count or a
+/// non-finite coordinate, `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator` or `xyz`.
+/// The evaluator is unchanged on error.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_evaluator_update_positions(
+    evaluator: *mut profsubd_evaluator,
+    xyz: *const f64,
+    n: usize,
+) -> profsubd_status {
+    status_call(|| {
+        let ev = handle::borrow_mut(evaluator, "evaluator")?;
+        let nv = ev.mesh().num_vertices();
+        if n != nv {
+            // Checked before `xyz` is read: `3 * n` doubles may not be there.
+            return Err(FfiError::invalid_argument(format!(
+                "{n} positions given for a mesh of {nv} vertices"
+            )));
+        }
+        let flat = arg_slice(xyz, 3 * n, "xyz")?;
+        let positions: Vec<DVec3> = flat.chunks_exact(3).map(DVec3::from_slice).collect();
+        ev.set_positions(&positions)?;
+        Ok(())
+    })
+}
+
+/// Set how many threads `profsubd_evaluator_evaluate`, `profsubd_evaluator_evaluate_points`
+/// and `profsubd_evaluator_update_positions` use: `threads` = 0 (the default) for all cores,
+/// 1 for the calling thread only. Results are bit for bit the same for every setting. Not
+/// concurrently with other calls on the same evaluator.
+///
+/// Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator`.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_evaluator_set_threads(
+    evaluator: *mut profsubd_evaluator,
+    threads: usize,
+) -> profsubd_status {
+    status_call(|| {
+        handle::borrow_mut(evaluator, "evaluator")?.set_threads(threads);
         Ok(())
     })
 }

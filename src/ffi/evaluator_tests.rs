@@ -520,3 +520,186 @@ fn limit_vertices_mark_the_isolated_vertex() {
         assert!(a[27..].iter().all(|x| x.is_nan()));
     }
 }
+
+/// Positions and derivatives (9 doubles a point, all positions first) and the surface mask
+/// at `(faces[i], u[i], v[i])` through the C API, Ptex domain, marking.
+fn evaluate_marked(
+    ev: *const profsubd_evaluator,
+    faces: &[u32],
+    u: &[f64],
+    v: &[f64],
+) -> (Vec<f64>, Vec<u8>) {
+    let n = faces.len();
+    let mut out = vec![0.0; 9 * n];
+    let mut mask = vec![0u8; n];
+    let (p, rest) = out.split_at_mut(3 * n);
+    let (du, dv) = rest.split_at_mut(3 * n);
+    unsafe {
+        let st = profsubd_evaluator_evaluate_points(
+            ev,
+            profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
+            0,
+            faces.as_ptr(),
+            u.as_ptr(),
+            v.as_ptr(),
+            n,
+            p.as_mut_ptr(),
+            du.as_mut_ptr(),
+            dv.as_mut_ptr(),
+            mask.as_mut_ptr(),
+        );
+        assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+    }
+    (out, mask)
+}
+
+/// [`evaluate_marked`] at `(face, 0.3, 0.6)` for every parametric face.
+fn evaluate_all(ev: *const profsubd_evaluator) -> Vec<f64> {
+    let faces: Vec<u32> = (0..17).collect();
+    evaluate_marked(ev, &faces, &[0.3; 17], &[0.6; 17]).0
+}
+
+#[test]
+fn update_positions_equals_a_fresh_build_and_rejects_bad_input_unchanged() {
+    let ev = evaluator();
+    let before = evaluate_all(ev);
+    let moved: Vec<f64> = mesh()
+        .positions()
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| {
+            let q = *p * 1.5 + DVec3::new(0.1 * i as f64, -0.2, crate::math::sin(i as f64));
+            [q.x, q.y, q.z]
+        })
+        .collect();
+    let mut parts = mesh().into_parts();
+    parts.positions = moved.chunks_exact(3).map(DVec3::from_slice).collect();
+    let fresh = {
+        let m = new_mesh_handle(Mesh::from_parts(parts).unwrap());
+        let mut fresh = null_mut();
+        unsafe {
+            assert_eq!(profsubd_evaluator_new(m, null(), &mut fresh), PROFSUBD_OK);
+            profsubd_mesh_free(m);
+        }
+        fresh
+    };
+    let mut bad = moved.clone();
+    bad[7] = f64::NAN;
+    unsafe {
+        let cases: [(
+            *mut profsubd_evaluator,
+            *const f64,
+            usize,
+            profsubd_status,
+            &str,
+        ); 5] = [
+            (
+                ev,
+                moved.as_ptr(),
+                8,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "8 positions given for a mesh of 9 vertices",
+            ),
+            (
+                ev,
+                moved.as_ptr(),
+                usize::MAX,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "for a mesh of 9 vertices",
+            ),
+            (
+                ev,
+                bad.as_ptr(),
+                9,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "position 2 has a non-finite coordinate",
+            ),
+            (ev, null(), 9, PROFSUBD_ERROR_NULL_ARGUMENT, "xyz"),
+            (
+                null_mut(),
+                moved.as_ptr(),
+                9,
+                PROFSUBD_ERROR_NULL_ARGUMENT,
+                "evaluator",
+            ),
+        ];
+        for (e, xyz, n, status, message) in cases {
+            assert_eq!(profsubd_evaluator_update_positions(e, xyz, n), status);
+            assert!(last_error().contains(message), "{}", last_error());
+            let same: Vec<u64> = evaluate_all(ev).iter().map(|x| x.to_bits()).collect();
+            let want: Vec<u64> = before.iter().map(|x| x.to_bits()).collect();
+            assert_eq!(same, want, "the evaluator changed on error");
+        }
+        assert_eq!(
+            profsubd_evaluator_update_positions(ev, moved.as_ptr(), 9),
+            PROFSUBD_OK
+        );
+        let got: Vec<u64> = evaluate_all(ev).iter().map(|x| x.to_bits()).collect();
+        let want: Vec<u64> = evaluate_all(fresh).iter().map(|x| x.to_bits()).collect();
+        assert_eq!(got, want);
+        assert_ne!(evaluate_all(ev)[..3], before[..3]);
+        profsubd_evaluator_free(ev);
+        profsubd_evaluator_free(fresh);
+    }
+}
+
+#[test]
+fn thread_count_changes_nothing_in_the_results() {
+    let ev = evaluator();
+    // Enough points for several threads; every parametric face, corners included.
+    let n = 20_000;
+    let faces: Vec<u32> = (0..n).map(|i| (i * 7 % 17) as u32).collect();
+    let u: Vec<f64> = (0..n).map(|i| ((i * 37) % 101) as f64 / 100.0).collect();
+    let v: Vec<f64> = (0..n).map(|i| ((i * 53) % 97) as f64 / 96.0).collect();
+    let run = |threads: usize| {
+        assert_eq!(
+            unsafe { profsubd_evaluator_set_threads(ev, threads) },
+            PROFSUBD_OK
+        );
+        let (out, mask) = evaluate_marked(ev, &faces, &u, &v);
+        let bits: Vec<u64> = out.iter().map(|x| x.to_bits()).collect();
+        (bits, mask)
+    };
+    let one = run(1);
+    assert!(
+        one.1.contains(&0) && one.1.contains(&1),
+        "holes and surface both present"
+    );
+    for threads in [0, 2, 3, 8] {
+        assert_eq!(run(threads), one, "{threads} threads");
+    }
+    unsafe {
+        assert_eq!(
+            profsubd_evaluator_set_threads(null_mut(), 2),
+            PROFSUBD_ERROR_NULL_ARGUMENT
+        );
+        // The first bad point is named whatever the thread count.
+        let mut bad_u = u.clone();
+        bad_u[n - 10] = 2.0;
+        bad_u[15_000] = -1.0;
+        let mut p = vec![0.0; 3 * n];
+        for threads in [1, 4] {
+            assert_eq!(profsubd_evaluator_set_threads(ev, threads), PROFSUBD_OK);
+            let st = profsubd_evaluator_evaluate_points(
+                ev,
+                profsubd_domain::PROFSUBD_DOMAIN_PTEX as i32,
+                0,
+                faces.as_ptr(),
+                bad_u.as_ptr(),
+                v.as_ptr(),
+                n,
+                p.as_mut_ptr(),
+                null_mut(),
+                null_mut(),
+                null_mut(),
+            );
+            assert_eq!(st, PROFSUBD_ERROR_INVALID_ARGUMENT);
+            assert!(
+                last_error().contains(": point 15000: (u, v) = (-1,"),
+                "{}",
+                last_error()
+            );
+        }
+        profsubd_evaluator_free(ev);
+    }
+}

@@ -18,6 +18,7 @@ mod tests;
 
 use glam::DVec3;
 
+pub(crate) use output::{corners_of, creases_of_child};
 pub use primvar::{interpolate, Primvar, SparseStencil};
 pub use step::{refine, Refinement, VertexOrder};
 
@@ -59,20 +60,6 @@ pub fn refine_uniform_ordered(
         level,
         order,
     )
-}
-
-/// [`refine_uniform`] of a fragment of a larger mesh whose faces that mesh orders as `ranks`
-/// does (see [`Level::from_mesh_ranked`]): the refined fragment agrees bit for bit with the
-/// refinement of the whole mesh wherever the fragment holds what that needs.
-pub(crate) fn refine_uniform_ranked(
-    mesh: &Mesh,
-    options: &SubdivOptions,
-    level: u32,
-    ranks: &[u32],
-) -> Result<Mesh> {
-    check_level(mesh, level)?;
-    let base = Level::from_mesh_ranked(mesh, options, Some(ranks));
-    refine_base(mesh, base, options, level, VertexOrder::VerticesFirst)
 }
 
 /// Refine `base`, the base level of `mesh`, `level` times.

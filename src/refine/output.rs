@@ -41,7 +41,7 @@ pub(super) fn creases_of(level: &Level) -> Vec<Crease> {
 
 /// The crease tags of the child of `r`, in child edge order, from the parent: only halves of
 /// parent edges can be sharp, and a half is a boundary or non-manifold edge when its parent is.
-pub(super) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
+pub(crate) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
     let mut out = Vec::new();
     for e in 0..parent.num_edges() {
         let (boundary, nm) = (parent.is_edge_boundary(e), parent.is_edge_non_manifold(e));
@@ -61,7 +61,7 @@ pub(super) fn creases_of_child(parent: &Level, r: &Refinement) -> Vec<Crease> {
 /// The corner tags of `level` (whose edge and vertex relations may be absent): its sharp
 /// vertices, except those `sharpened(v)` says Far sharpens from topology alone (asked only of
 /// sharp vertices).
-pub(super) fn corners_of(level: &Level, sharpened: impl Fn(usize) -> bool) -> Vec<Corner> {
+pub(crate) fn corners_of(level: &Level, sharpened: impl Fn(usize) -> bool) -> Vec<Corner> {
     (0..level.num_vertices())
         .filter(|&v| level.vertex_sharpness(v) > 0.0 && !sharpened(v))
         .map(|v| Corner {

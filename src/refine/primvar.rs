@@ -21,6 +21,11 @@ pub trait Primvar: Sized {
     fn zero() -> Self;
     /// `self += weight * src`.
     fn add_weighted(&mut self, src: &Self, weight: f64);
+    /// Called on the value of child vertex `child` once it is complete, before it is stored
+    /// (and, for a face point, read by the edge and vertex points): a value that records
+    /// how it was computed can learn its own index here. Nothing by default.
+    #[inline]
+    fn finish(&mut self, _child: u32) {}
 }
 
 impl Primvar for DVec3 {
@@ -105,6 +110,7 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
         for &v in fv {
             acc.add_weighted(&src[v as usize], w);
         }
+        acc.finish(r.face_child_vertex(f));
         dst[r.face_child_vertex(f) as usize] = acc;
     }
 
@@ -121,6 +127,7 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
             acc.add_weighted(&src[ev[1] as usize], 0.25);
             acc.add_weighted(&dst[r.face_child_vertex(ef[0] as usize) as usize], 0.25);
             acc.add_weighted(&dst[r.face_child_vertex(ef[1] as usize) as usize], 0.25);
+            acc.finish(cv as u32);
             dst[cv] = acc;
             continue;
         }
@@ -147,6 +154,7 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
         for (&f, &w) in ef.iter().zip(&emask.faces) {
             acc.add_weighted(&dst[r.face_child_vertex(f as usize) as usize], w);
         }
+        acc.finish(cv as u32);
         dst[cv] = acc;
     }
 
@@ -172,6 +180,7 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
                 acc.add_weighted(&src[across as usize], w);
             }
             acc.add_weighted(&src[v], (n as f64 - 2.0) / n as f64);
+            acc.finish(cv as u32);
             dst[cv] = acc;
             continue;
         }
@@ -202,6 +211,7 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
             acc.add_weighted(&src[across as usize], w);
         }
         acc.add_weighted(&src[v], vmask.vertex);
+        acc.finish(cv as u32);
         dst[cv] = acc;
     }
     dst

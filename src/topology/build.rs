@@ -28,8 +28,37 @@ impl Level {
     /// first face in face order). Chaikin creasing sums the sharpness around a vertex in that
     /// order, in `f32`, so the start shows in the last bits.
     pub fn from_mesh_ranked(mesh: &Mesh, options: &SubdivOptions, ranks: Option<&[u32]>) -> Level {
-        let mut level = topology_from_face_vertices(mesh, *options, ranks);
-        level.assign_tags_and_sharpness(mesh);
+        let creases = mesh.creases().iter().map(|c| (c.vertices, c.sharpness));
+        let corners = mesh.corners().iter().map(|c| (c.vertex, c.sharpness));
+        let tags = Tags {
+            creases,
+            corners,
+            holes: mesh.holes(),
+        };
+        Level::from_faces(
+            mesh.num_vertices(),
+            mesh.face_offsets(),
+            mesh.face_indices(),
+            tags,
+            options,
+            ranks,
+        )
+    }
+
+    /// [`Level::from_mesh_ranked`] from flat face arrays and tags rather than a [`Mesh`]
+    /// (a fragment of a refined mesh, which needs no validation again): `nv` vertices, face
+    /// `f` the vertices `face_indices[face_offsets[f]..face_offsets[f + 1]]`.
+    pub(crate) fn from_faces(
+        nv: usize,
+        face_offsets: &[u32],
+        face_indices: &[u32],
+        tags: Tags<impl Iterator<Item = ([u32; 2], f32)>, impl Iterator<Item = (u32, f32)>>,
+        options: &SubdivOptions,
+        ranks: Option<&[u32]>,
+    ) -> Level {
+        let mut level =
+            topology_from_face_vertices(nv, face_offsets, face_indices, *options, ranks);
+        level.assign_tags_and_sharpness(tags);
         level
     }
 
@@ -133,17 +162,19 @@ impl Level {
     }
 
     /// Mesh tags, then Far's boundary and non-manifold sharpening, holes and vertex rules.
-    fn assign_tags_and_sharpness(&mut self, mesh: &Mesh) {
-        for c in mesh.creases() {
-            let [a, b] = c.vertices;
+    fn assign_tags_and_sharpness(
+        &mut self,
+        tags: Tags<impl Iterator<Item = ([u32; 2], f32)>, impl Iterator<Item = (u32, f32)>>,
+    ) {
+        for ([a, b], s) in tags.creases {
             if let Some(e) = self.find_edge(a as usize, b as usize) {
-                self.edge_sharpness[e as usize] = c.sharpness;
+                self.edge_sharpness[e as usize] = s;
             }
         }
-        for c in mesh.corners() {
-            self.vert_sharpness[c.vertex as usize] = c.sharpness;
+        for (v, s) in tags.corners {
+            self.vert_sharpness[v as usize] = s;
         }
-        for &h in mesh.holes() {
+        for &h in tags.holes {
             self.face_holes[h as usize] = true;
         }
         let rule = self.options.boundary;
@@ -198,6 +229,17 @@ impl Level {
     }
 }
 
+/// The tags a base level is built with: crease `(edge vertices, sharpness)` pairs (a later
+/// tag of the same edge wins), corner `(vertex, sharpness)` pairs and hole faces.
+pub(crate) struct Tags<'a, C, V> {
+    /// Edge sharpness tags.
+    pub creases: C,
+    /// Vertex sharpness tags.
+    pub corners: V,
+    /// Faces tagged as holes.
+    pub holes: &'a [u32],
+}
+
 /// Offsets of rows of the given lengths (`offsets[i]..offsets[i + 1]` is row `i`).
 fn offsets_of(lengths: impl IntoIterator<Item = u32>) -> Vec<u32> {
     let lengths = lengths.into_iter();
@@ -218,14 +260,15 @@ fn offsets_of(lengths: impl IntoIterator<Item = u32>) -> Vec<u32> {
 /// at the end; edge-face rows are filled once all edges are known, in the order the faces
 /// met the edge.
 fn topology_from_face_vertices(
-    mesh: &Mesh,
+    nv: usize,
+    face_offsets: &[u32],
+    face_indices: &[u32],
     options: SubdivOptions,
     ranks: Option<&[u32]>,
 ) -> Level {
-    let nv = mesh.num_vertices();
-    let nf = mesh.num_faces();
-    let face_offsets = mesh.face_offsets().to_vec();
-    let face_verts = mesh.face_indices().to_vec();
+    let nf = face_offsets.len() - 1;
+    let face_offsets = face_offsets.to_vec();
+    let face_verts = face_indices.to_vec();
     let nfv = face_verts.len();
     let mut face_edges = vec![0u32; nfv];
 

@@ -11,4 +11,5 @@ mod level;
 mod tests;
 mod validate;
 
+pub(crate) use build::Tags;
 pub use level::Level;

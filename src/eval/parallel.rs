@@ -1,0 +1,77 @@
+//! Work split over threads with results independent of the thread count: contiguous ranges
+//! of indices, one per thread, joined in order (scoped standard threads, no pool).
+
+/// Fewest items worth a thread: below this a batch runs on the calling thread.
+const MIN_ITEMS_PER_THREAD: usize = 1024;
+
+/// The number of threads `requested` means: itself, or all cores for 0.
+pub(crate) fn resolve_threads(requested: usize) -> usize {
+    if requested > 0 {
+        requested
+    } else {
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    }
+}
+
+/// `f(i)` for every `i` in `0..n`, in order, on up to `threads` threads (0: all cores). Each
+/// item is computed exactly as on one thread, so the result does not depend on the thread
+/// count; on error, the error of the lowest failing index (as one thread would stop at).
+pub(crate) fn try_map<T: Send, E: Send>(
+    n: usize,
+    threads: usize,
+    f: impl Fn(usize) -> Result<T, E> + Sync,
+) -> Result<Vec<T>, E> {
+    let threads = resolve_threads(threads)
+        .min(n / MIN_ITEMS_PER_THREAD)
+        .max(1);
+    if threads == 1 {
+        return (0..n).map(f).collect();
+    }
+    let chunk = n.div_ceil(threads);
+    let f = &f;
+    let parts: Vec<Result<Vec<T>, E>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..threads)
+            .map(|t| {
+                let range = t * chunk..((t + 1) * chunk).min(n);
+                scope.spawn(move || range.map(f).collect::<Result<Vec<T>, E>>())
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .collect()
+    });
+    let mut out = Vec::with_capacity(n);
+    for part in parts {
+        out.extend(part?);
+    }
+    Ok(out)
+}
+
+/// [`try_map`] for work that cannot fail.
+pub(crate) fn map<T: Send>(n: usize, threads: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
+    match try_map(n, threads, |i| Ok::<T, std::convert::Infallible>(f(i))) {
+        Ok(v) => v,
+        Err(never) => match never {},
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn results_and_first_error_do_not_depend_on_the_thread_count() {
+        let n = 10_000;
+        let f = |i: usize| if i % 3001 == 3000 { Err(i) } else { Ok(i * i) };
+        let ok = |i: usize| Ok::<usize, usize>(i * 7 + 1);
+        let one = try_map(n, 1, ok).unwrap();
+        assert_eq!(one, (0..n).map(|i| i * 7 + 1).collect::<Vec<_>>());
+        for threads in [0, 2, 3, 7, 64] {
+            assert_eq!(try_map(n, threads, ok).unwrap(), one);
+            assert_eq!(try_map(n, threads, f), Err(3000));
+        }
+        assert_eq!(try_map(0, 4, ok).unwrap(), Vec::<usize>::new());
+        assert!(resolve_threads(0) >= 1 && resolve_threads(5) == 5);
+    }
+}

@@ -1,0 +1,177 @@
+//! The evaluator's points as a program over the control points: what lets an evaluator be
+//! built from topology alone and take new positions (or any vertex data) cheaply.
+//!
+//! Every vertex of every refined fragment the evaluator keeps is a *local point*: the
+//! weighted sum that refinement computed it with ([`crate::refine::interpolate`]), its
+//! terms in the same order with the same weights, over control points and earlier local
+//! points. Replaying the program on positions repeats refinement's arithmetic operation for
+//! operation, so an evaluator given new positions is bit for bit the one built with them
+//! (it is how every evaluator gets its positions). Like Far's refinement stencils, but
+//! factorized level by level rather than flattened onto the control points: a point deep
+//! under a semi-sharp crease has a handful of terms, not the 30-odd control points it
+//! depends on.
+
+use glam::DVec3;
+
+use crate::refine::{interpolate, Primvar, Refinement};
+use crate::topology::Level;
+
+/// Local points as weighted sums of earlier points. Point `i < num_control` is control
+/// point `i`; point `num_control + k` is row `k`.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct PointProgram {
+    num_control: u32,
+    offsets: Vec<u32>,
+    sources: Vec<u32>,
+    weights: Vec<f64>,
+}
+
+/// Bit marking a term of [`Recorded`] as a child vertex of the same refinement (face points,
+/// which edge and vertex points read) rather than a parent vertex.
+const CHILD: u32 = 1 << 31;
+
+/// A refined vertex as the weighted sum interpolation built: its terms over parent vertices
+/// and (with [`CHILD`]) earlier child vertices, in the order they were added.
+#[derive(Debug, Clone, Default)]
+struct Recorded {
+    /// This vertex: its parent index, or [`CHILD`] | its child index once complete.
+    own: u32,
+    terms: Vec<(u32, f64)>,
+}
+
+impl Primvar for Recorded {
+    fn zero() -> Self {
+        Recorded::default()
+    }
+    fn add_weighted(&mut self, src: &Self, weight: f64) {
+        self.terms.push((src.own, weight));
+    }
+    fn finish(&mut self, child: u32) {
+        self.own = CHILD | child;
+    }
+}
+
+impl PointProgram {
+    /// A program over `num_control` control points, with no local points yet.
+    pub fn new(num_control: usize) -> PointProgram {
+        PointProgram {
+            num_control: num_control as u32,
+            offsets: vec![0],
+            sources: Vec::new(),
+            weights: Vec::new(),
+        }
+    }
+
+    /// Number of points: control and local.
+    pub fn num_points(&self) -> usize {
+        self.num_control as usize + self.offsets.len() - 1
+    }
+
+    fn push(&mut self, terms: impl IntoIterator<Item = (u32, f64)>) -> u32 {
+        for (s, w) in terms {
+            self.sources.push(s);
+            self.weights.push(w);
+        }
+        self.offsets.push(self.sources.len() as u32);
+        self.num_points() as u32 - 1
+    }
+
+    /// The points of the child of refinement `r` of `level`, whose vertices are points
+    /// `parent`, recorded as new local points; returns the child vertices' points. Face
+    /// points come first, then edge points, then vertex points: the order refinement
+    /// completes them in, so that every term reads an earlier point.
+    pub fn record(&mut self, level: &Level, r: &Refinement, parent: &[u32]) -> Vec<u32> {
+        let src: Vec<Recorded> = (0..level.num_vertices() as u32)
+            .map(|v| Recorded {
+                own: v,
+                terms: Vec::new(),
+            })
+            .collect();
+        let dst = interpolate(level, r, &src);
+        let mut points = vec![0u32; dst.len()];
+        let first_face = r.face_child_vertex(0) as usize;
+        let faces = first_face..first_face + level.num_faces();
+        let first_edge = r.edge_child_vertex(0) as usize;
+        let edges = first_edge..first_edge + level.num_edges();
+        let first_vertex = r.vertex_child_vertex(0) as usize;
+        let vertices = first_vertex..first_vertex + level.num_vertices();
+        for cv in faces.chain(edges).chain(vertices) {
+            let terms = dst[cv].terms.iter().map(|&(s, w)| {
+                let p = if s & CHILD != 0 {
+                    points[(s & !CHILD) as usize]
+                } else {
+                    parent[s as usize]
+                };
+                (p, w)
+            });
+            points[cv] = self.push(terms);
+        }
+        points
+    }
+
+    /// Every point's value from the control points' `control` (one per control point):
+    /// each local point summed as refinement sums it.
+    ///
+    /// Panics if `control` has fewer values than the program has control points.
+    pub fn run(&self, control: &[DVec3]) -> Vec<DVec3> {
+        let nc = self.num_control as usize;
+        let mut values = Vec::with_capacity(self.num_points());
+        values.extend_from_slice(&control[..nc]);
+        for w in self.offsets.windows(2) {
+            let (a, b) = (w[0] as usize, w[1] as usize);
+            let mut acc = DVec3::ZERO;
+            for (&s, &wt) in self.sources[a..b].iter().zip(&self.weights[a..b]) {
+                acc.add_weighted(&values[s as usize], wt);
+            }
+            values.push(acc);
+        }
+        values
+    }
+
+    /// Keep only the points `roots` name and those they read, numbered in the same order;
+    /// `roots` are renumbered in place.
+    pub fn prune(&mut self, roots: &mut [&mut [u32]]) {
+        let nc = self.num_control as usize;
+        let np = self.num_points();
+        let mut needed = vec![false; np];
+        for list in roots.iter() {
+            for &p in list.iter() {
+                if p != u32::MAX {
+                    needed[p as usize] = true;
+                }
+            }
+        }
+        for p in (nc..np).rev() {
+            if needed[p] {
+                let k = p - nc;
+                let (a, b) = (self.offsets[k] as usize, self.offsets[k + 1] as usize);
+                for &s in &self.sources[a..b] {
+                    needed[s as usize] = true;
+                }
+            }
+        }
+        let mut renumber: Vec<u32> = (0..nc as u32).collect();
+        renumber.resize(np, u32::MAX);
+        let mut kept = PointProgram::new(nc);
+        for p in nc..np {
+            if !needed[p] {
+                continue;
+            }
+            let k = p - nc;
+            let (a, b) = (self.offsets[k] as usize, self.offsets[k + 1] as usize);
+            let terms = self.sources[a..b]
+                .iter()
+                .zip(&self.weights[a..b])
+                .map(|(&s, &w)| (renumber[s as usize], w));
+            renumber[p] = kept.push(terms);
+        }
+        for list in roots.iter_mut() {
+            for p in list.iter_mut() {
+                if *p != u32::MAX {
+                    *p = renumber[*p as usize];
+                }
+            }
+        }
+        *self = kept;
+    }
+}

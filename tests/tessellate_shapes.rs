@@ -105,12 +105,7 @@ fn check(path: &Path, rate: u32, tol_rel: f64) -> Outcome {
                 "{name} {r:?}"
             );
         }
-        // Open manifolds stay manifold; the val2 shapes (interior valence-2 vertices) are
-        // left out: one gives a non-manifold edge (not understood yet).
-        if control.non_manifold_edges == 0
-            && control.misoriented_edges == 0
-            && !name.starts_with("catmark_val2")
-        {
+        if control.non_manifold_edges == 0 && control.misoriented_edges == 0 {
             // Open manifolds stay manifold, with the same orientation and topology.
             assert_eq!(
                 report.non_manifold_edges + report.misoriented_edges,

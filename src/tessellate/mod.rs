@@ -156,6 +156,18 @@ impl Tessellation {
     }
 }
 
+/// The two triangles of a cell of a parametric face whose corners `at_vertex` are control
+/// vertices: split through that vertex when exactly one diagonal has one, else along the
+/// shorter diagonal. At a valence-2 vertex the two faces' corner cells share both sides, so
+/// a split along the other diagonal would give both the same triangle (a non-manifold edge).
+fn split_cell(positions: &[DVec3], q: [u32; 4], at_vertex: [bool; 4]) -> [[usize; 3]; 2] {
+    match (at_vertex[0] || at_vertex[2], at_vertex[1] || at_vertex[3]) {
+        (true, false) => [[0, 1, 2], [0, 2, 3]],
+        (false, true) => [[0, 1, 3], [1, 2, 3]],
+        _ => split_quad(positions, q),
+    }
+}
+
 /// The two triangles (as corner positions 0-3) of quad `q` split along its shorter diagonal
 /// (0-2 on a tie).
 fn split_quad(positions: &[DVec3], q: [u32; 4]) -> [[usize; 3]; 2] {
@@ -511,7 +523,14 @@ impl<'a> Plan<'a> {
                     let c = &st.corners[start..start + size as usize];
                     let pieces: Vec<Vec<usize>> = if size == 4 && !quads {
                         let q = [0, 1, 2, 3].map(|i| ids[c[i] as usize]);
-                        split_quad(&t.positions, q)
+                        let at_vertex = [0, 1, 2, 3].map(|i| {
+                            let spot = st.points[c[i] as usize].0;
+                            matches!(
+                                self.key(f, sub, p, spot, &edge_rate, &spoke_rate),
+                                Key::Vertex(_)
+                            )
+                        });
+                        split_cell(&t.positions, q, at_vertex)
                             .iter()
                             .map(|tri| tri.iter().map(|&i| c[i] as usize).collect())
                             .collect()

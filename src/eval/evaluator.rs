@@ -633,5 +633,4 @@ fn faces_without_surface(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
 }
 
 #[cfg(test)]
-#[path = "evaluator_tests.rs"]
-pub(crate) mod tests;
+mod tests;

@@ -583,5 +583,4 @@ fn trapezoid(i: u32, n: u32) -> f64 {
 }
 
 #[cfg(test)]
-#[path = "folds_tests.rs"]
 mod tests;

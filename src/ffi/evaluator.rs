@@ -398,5 +398,4 @@ pub unsafe extern "C" fn profsubd_evaluator_limit_vertices_masked(
 }
 
 #[cfg(test)]
-#[path = "evaluator_tests.rs"]
 mod tests;

@@ -347,5 +347,4 @@ pub unsafe extern "C" fn profsubd_tessellation_write(
 }
 
 #[cfg(test)]
-#[path = "tessellate_tests.rs"]
 mod tests;

@@ -3,12 +3,12 @@
 use std::ptr::{null, null_mut};
 
 use super::*;
-use crate::eval::evaluator::tests::grid;
 use crate::ffi::error::last_error;
 use crate::ffi::evaluator::{profsubd_evaluator_free, profsubd_evaluator_new};
 use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh_free};
 use crate::ffi::status::profsubd_status::*;
 use crate::mesh::Mesh;
+use crate::test_support::grid;
 
 /// An 8 × 8 planar grid with vertex (4, 4) pushed 2.3 along +x: folds in faces 28 and 36
 /// (see the library's tests for why).

@@ -6,10 +6,10 @@ use glam::DVec3;
 
 use super::{find_folds, FoldSettings};
 use crate::error::Error;
-use crate::eval::evaluator::tests::grid;
 use crate::eval::Evaluator;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts, SHARPNESS_INFINITE};
 use crate::options::SubdivOptions;
+use crate::test_support::grid;
 
 fn report(parts: MeshParts) -> super::FoldReport {
     let mesh = Mesh::from_parts(parts).unwrap();

@@ -7,30 +7,7 @@ use crate::eval::bspline::BicubicPatch;
 use crate::eval::evaluator::Evaluator;
 use crate::mesh::{Crease, Mesh, MeshParts};
 use crate::options::{BoundaryInterpolation, SubdivOptions};
-
-/// An `n × n` grid of unit quads, vertex `(i, j)` at `(i, j, height(i, j))`, face `(i, j)`
-/// = index `j * n + i` with corner 0 at `(i, j)`.
-pub(crate) fn grid(n: usize, height: impl Fn(f64, f64) -> f64) -> MeshParts {
-    let mut positions = Vec::new();
-    for j in 0..=n {
-        for i in 0..=n {
-            positions.push(DVec3::new(i as f64, j as f64, height(i as f64, j as f64)));
-        }
-    }
-    let id = |i: usize, j: usize| (j * (n + 1) + i) as u32;
-    let mut face_indices = Vec::new();
-    for j in 0..n {
-        for i in 0..n {
-            face_indices.extend([id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]);
-        }
-    }
-    MeshParts {
-        positions,
-        face_sizes: vec![4; n * n],
-        face_indices,
-        ..Default::default()
-    }
-}
+use crate::test_support::grid;
 
 fn bumpy(x: f64, y: f64) -> f64 {
     math::sin(0.7 * x) * math::cos(0.4 * y + 0.3) + 0.05 * x * y

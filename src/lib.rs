@@ -125,6 +125,7 @@ pub use construct::profile::ProfileInput;
 pub use construct::revolve::RevolveInput;
 pub use construct::sweep::SweepInput;
 pub use construct::{profile, revolve, sweep, Caps, Fitted, Settings};
+pub use curves::Interpolation;
 pub use error::{Error, Result};
 pub use eval::{limit_stencils, Evaluator};
 pub use fit::{FitOptions, FitReport};

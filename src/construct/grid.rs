@@ -134,11 +134,6 @@ impl QuadMeshBuilder {
         }
     }
 
-    /// The data points (initial positions) so far.
-    pub fn points(&self) -> &[DVec3] {
-        &self.points
-    }
-
     /// The mesh parts, carrying `options` as its tags.
     pub fn finish(self, options: PartialOptions) -> MeshParts {
         MeshParts {

@@ -12,20 +12,20 @@
 //! - [`fitted`]: [`Fitted`], the fit of a cage and its surface report;
 //! - [`design`]: distance to the design surface between the data points, folds and
 //!   undulation of a fitted construction;
-//! - [`equidistribute`]: ring spacing weighted by the profile's curvature (resolves a
+//! - `equidistribute`: ring spacing weighted by the profile's curvature (resolves a
 //!   sharply turning rim without wasting rings on flat parts);
-//! - [`grid`]: ring-by-meridian quad grids with their end treatments, and crease tagging on
+//! - `grid`: ring-by-meridian quad grids with their end treatments, and crease tagging on
 //!   rings;
-//! - [`grid_mesh`]: a sampled grid of data points (revolutions, sweeps) to quad mesh parts;
-//! - [`pole_cap`]: the quad patches that close a ring (smooth poles, flat caps) and the
+//! - `grid_mesh`: a sampled grid of data points (revolutions, sweeps) to quad mesh parts;
+//! - `pole_cap`: the quad patches that close a ring (smooth poles, flat caps) and the
 //!   pointed-tip fan.
 
 pub mod design;
-pub mod equidistribute;
+pub(crate) mod equidistribute;
 pub mod fitted;
-pub mod grid;
-pub mod grid_mesh;
-pub mod pole_cap;
+pub(crate) mod grid;
+pub(crate) mod grid_mesh;
+pub(crate) mod pole_cap;
 pub mod profile;
 pub mod revolve;
 pub mod settings;

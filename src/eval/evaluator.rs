@@ -4,8 +4,8 @@
 //! [`Evaluator::evaluate_in`] in Bfr's tiled domain too (see [`super::domain`]); faces
 //! without limit surface are marked ([`super::surface`]). Each parametric
 //! face is the root of a quadtree built at construction: a quad whose corners are regular is a
-//! bicubic B-spline leaf ([`super::patch_regular`]); any other quad is refined one level —
-//! only its neighbourhood, see [`super::patch_topology`] — and each of its four children is
+//! bicubic B-spline leaf (`super::patch_regular`); any other quad is refined one level —
+//! only its neighbourhood, see `super::patch_topology` — and each of its four children is
 //! treated the same way, down to [`CACHE_DEPTH`]. Below that depth (only near extraordinary
 //! vertices, darts and slowly decaying sharpness) a point is evaluated by refining its
 //! neighbourhood further on the spot until it falls into a regular sub-patch. A point exactly

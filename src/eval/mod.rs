@@ -5,23 +5,23 @@
 //! - [`limit_vertex_samples`] / [`vertex_limit_stencils`]: positions and derivatives at the
 //!   control vertices ([`vertex_limit`] documents the conventions);
 //! - [`Evaluator`] ([`evaluator`]): the limit surface at any `(face, u, v)`, addressed as
-//!   [`ptex`] documents, or in Bfr's tiled domain ([`domain`]); [`bspline`],
-//!   [`patch_regular`], [`patch_topology`]: regular bicubic patches, when a face is one, and
+//!   [`ptex`] documents, or in Bfr's tiled domain ([`domain`]); `bspline`,
+//!   `patch_regular`, `patch_topology`: regular bicubic patches, when a face is one, and
 //!   the neighbourhoods refined until it is;
 //! - [`folds`]: where the limit surface folds (its normal turns through zero and back);
 //! - [`StencilTable`], [`LimitSample`]: the shared result types;
 //! - [`surface`]: which faces and vertices have a limit surface, and how points without one
 //!   are marked.
 
-pub mod bspline;
+pub(crate) mod bspline;
 mod dense;
 pub mod domain;
 pub mod evaluator;
 pub mod folds;
 mod parallel;
-pub mod patch_corner;
-pub mod patch_regular;
-pub mod patch_topology;
+pub(crate) mod patch_corner;
+pub(crate) mod patch_regular;
+pub(crate) mod patch_topology;
 mod points;
 pub mod ptex;
 pub mod sample;

@@ -183,11 +183,6 @@ impl Neighbourhood {
         nb
     }
 
-    /// The ranks of the faces (see the field), for refinement.
-    pub fn face_ranks(&self) -> &[u32] {
-        &self.face_ranks
-    }
-
     fn assemble(
         nv: usize,
         face_offsets: Vec<u32>,

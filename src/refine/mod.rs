@@ -12,7 +12,7 @@
 
 mod output;
 pub mod primvar;
-pub mod step;
+pub(crate) mod step;
 #[cfg(test)]
 mod tests;
 

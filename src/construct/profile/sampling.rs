@@ -2,13 +2,13 @@
 //!
 //! Each segment `[T_j, T_{j+1}]` gets intervals in proportion to its length (largest
 //! deficit first), at least one. Inside a segment rings are uniform in the
-//! curvature-weighted length of the four curves ([`crate::construct::equidistribute`]); a
+//! curvature-weighted length of the four curves (`crate::construct::equidistribute`); a
 //! ring passes through every breakpoint.
 //!
-//! A smooth pole's grid cap replaces the innermost rings of its segment ([`cap_depths`]):
+//! A smooth pole's grid cap replaces the innermost rings of its segment (`cap_depths`):
 //! as many as its concentric squares (`around / 8`), so that the cap's cells are as large as
 //! the faces around it, but never the segment's last ring
-//! ([`crate::construct::pole_cap::cap_depths`]).
+//! (`crate::construct::pole_cap::cap_depths`).
 
 use super::param::CommonParam;
 use super::silhouettes::{EndKind, Silhouettes};
@@ -29,7 +29,7 @@ pub struct Rings {
 
 impl Rings {
     /// Place `along` ring intervals; a smooth pole's cap replaces up to `cap_squares` of them
-    /// ([`cap_depths`]), at least one.
+    /// (`cap_depths`), at least one.
     ///
     /// Errors ([`Error::InvalidArgument`]): `along` too small for the segments and caps; the
     /// curves crossing the axis at a ring.

@@ -29,7 +29,7 @@
 //! the axis at more than half that angle from the perpendicular, is a *pointed pole* (a tip
 //! vertex tagged as an infinitely sharp corner, like a cone's apex); otherwise it is a *smooth
 //! pole*, closed by a grid cap of quads (valence 3 and 4 only, see
-//! [`crate::construct::pole_cap`]). On a full turn `samples_around` must be a multiple of 4
+//! `crate::construct::pole_cap`). On a full turn `samples_around` must be a multiple of 4
 //! for a smooth pole or a flat cap and even for a tip. On a partial turn a pole lies on both
 //! boundary meridians; it is closed by a sector of quads whose apex is tagged as an
 //! infinitely sharp corner ([`wedge`]; `samples_around` a multiple of 4). Profile

@@ -11,7 +11,7 @@
 //! spans the other half the same way. So the apex has valence 3 (4 with meridian caps), the
 //! quarter points valence 3, the other vertices 4: no vertex of valence ≈ `n`, and as each
 //! half spans at most 180° no quad has a reflex angle. Each patch is a quarter of a full
-//! turn's grid cap ([`crate::construct::pole_cap`]): its vertices lie, as a relative radius ρ
+//! turn's grid cap (`crate::construct::pole_cap`): its vertices lie, as a relative radius ρ
 //! and an angle θ, on the L-shaped lines `max(x, y) = ρ k` mapped to circles, uniformly in
 //! angle (`square_polar`), so the radial steps are `1/k` of the radius everywhere, also at
 //! the quarter points (a Coons patch squeezed them to nothing there, next to the ring's long
@@ -96,7 +96,7 @@ const SPAN_LIMIT: f64 = 5.0 * PI / 6.0;
 
 /// Where grid point `(x, y)` (0 to `m` each) of a sector patch lies, as a relative radius and
 /// a fraction of the patch's span: the patch is a quarter of a full turn's grid cap
-/// ([`crate::construct::pole_cap`]), whose concentric squares map to circles: the L-shaped
+/// (`crate::construct::pole_cap`), whose concentric squares map to circles: the L-shaped
 /// square line `max(x, y) = ρ m` to the circle of radius ρ, uniformly in angle from the
 /// radial line at 0 (`y = 0`) through the corner `(ρ m, ρ m)` (half the span) to the one at
 /// the span (`x = 0`). So the radial steps are `1 / m` everywhere, also at the patch's

@@ -98,7 +98,7 @@
 //! - `fit` (internal): interpolating fit of control points to data points ([`FitReport`],
 //!   [`FitOptions`] re-exported);
 //! - [`io`]: OBJ with OpenSubdiv tag lines;
-//! - [`ffi`]: the C ABI (`include/profsubd.h`).
+//! - `ffi` (hidden here): the C ABI, documented in `include/profsubd.h`.
 
 #![deny(missing_docs)]
 
@@ -109,6 +109,7 @@ pub mod construct;
 pub mod curves;
 pub mod error;
 pub mod eval;
+#[doc(hidden)]
 pub mod ffi;
 pub(crate) mod fit;
 pub mod io;

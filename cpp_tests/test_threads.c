@@ -60,13 +60,13 @@ static void work(result *r) {
     profsubd_mesh_free(refined);
     /* A small vase profile (r, z), revolved under the shared options. */
     static const double profile[] = {0.0, 0.0, 0.6, 0.0, 0.8, 0.5, 0.4, 1.2, 0.5, 1.6};
-    struct profsubd_swept *swept = NULL;
+    struct profsubd_fitted *swept = NULL;
     struct profsubd_mesh *mesh = NULL;
     CHECK(profsubd_revolve(profile, 5, g_options, &swept));
-    CHECK(profsubd_swept_get_mesh(swept, &mesh));
+    CHECK(profsubd_fitted_get_mesh(swept, &mesh));
     r->revolved = positions_of(mesh, &r->revolved_len);
     profsubd_mesh_free(mesh);
-    profsubd_swept_free(swept);
+    profsubd_fitted_free(swept);
 }
 
 static void *thread_main(void *arg) {
@@ -115,7 +115,7 @@ int main(void) {
     struct profsubd_evaluator *evaluator = NULL;
     CHECK(profsubd_mesh_new(&d, &mesh));
     CHECK(profsubd_options_new(&options));
-    CHECK(profsubd_options_set_sweep_samples(options, 16, 32));
+    CHECK(profsubd_options_set_samples(options, 16, 32));
     CHECK(profsubd_evaluator_new(mesh, options, &evaluator));
     g_mesh = mesh;
     g_options = options;

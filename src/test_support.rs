@@ -5,7 +5,7 @@ use std::f64::consts::TAU;
 
 use glam::DVec3;
 
-use crate::mesh::{Mesh, MeshParts};
+use crate::mesh::{Crease, Mesh, MeshParts};
 
 /// The unit square as one quad without tags.
 pub(crate) fn quad() -> MeshParts {
@@ -25,6 +25,24 @@ pub(crate) fn quad() -> MeshParts {
 /// The unit square as a one-quad mesh.
 pub(crate) fn quad_mesh() -> Mesh {
     Mesh::from_parts(quad()).unwrap()
+}
+
+/// The unit cube `[0, 1]³`, vertex `k` at `(k & 1, k >> 1 & 1, k >> 2)`, outward quads,
+/// with `creases`.
+pub(crate) fn unit_cube(creases: Vec<Crease>) -> Mesh {
+    let positions = (0..8)
+        .map(|k| DVec3::new((k & 1) as f64, ((k >> 1) & 1) as f64, ((k >> 2) & 1) as f64))
+        .collect();
+    Mesh::from_parts(MeshParts {
+        positions,
+        face_sizes: vec![4; 6],
+        face_indices: vec![
+            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
+        ],
+        creases,
+        ..Default::default()
+    })
+    .unwrap()
 }
 
 /// `n` points on the circle of radius `r` about the origin, counter-clockwise.

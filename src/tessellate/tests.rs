@@ -3,22 +3,7 @@ use glam::DVec3;
 use super::*;
 use crate::mesh::{Crease, Mesh, MeshParts};
 use crate::options::SubdivOptions;
-
-fn cube(creases: Vec<Crease>) -> Mesh {
-    let positions = (0..8)
-        .map(|k| DVec3::new((k & 1) as f64, ((k >> 1) & 1) as f64, ((k >> 2) & 1) as f64))
-        .collect();
-    Mesh::from_parts(MeshParts {
-        positions,
-        face_sizes: vec![4; 6],
-        face_indices: vec![
-            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
-        ],
-        creases,
-        ..Default::default()
-    })
-    .unwrap()
-}
+use crate::test_support::unit_cube;
 
 /// A triangular prism: two triangles and three quads, closed.
 fn prism() -> Mesh {
@@ -70,7 +55,7 @@ fn opts(rate: Rate, quads: bool) -> TessellateOptions {
 
 #[test]
 fn uniform_cube_is_a_closed_grid_on_the_limit() {
-    let ev = Evaluator::new(&cube(vec![]), &SubdivOptions::default()).unwrap();
+    let ev = Evaluator::new(&unit_cube(vec![]), &SubdivOptions::default()).unwrap();
     for n in 1..5u32 {
         let t = tessellate(&ev, &opts(Rate::Uniform(n), true)).unwrap();
         let n = n as usize;
@@ -110,7 +95,7 @@ fn infinitely_sharp_creases_split_normals() {
             sharpness: 10.0,
         })
         .to_vec();
-    let ev = Evaluator::new(&cube(creases), &SubdivOptions::default()).unwrap();
+    let ev = Evaluator::new(&unit_cube(creases), &SubdivOptions::default()).unwrap();
     let n = 4;
     let t = tessellate(&ev, &opts(Rate::Uniform(n), true)).unwrap();
     assert!(t.edge_report().is_closed_oriented_manifold());
@@ -164,7 +149,7 @@ fn adaptive_rates_meet_the_tolerance_without_t_junctions() {
 
 #[test]
 fn bad_rates_and_tolerances_are_errors() {
-    let ev = Evaluator::new(&cube(vec![]), &SubdivOptions::default()).unwrap();
+    let ev = Evaluator::new(&unit_cube(vec![]), &SubdivOptions::default()).unwrap();
     for rate in [
         Rate::Uniform(0),
         Rate::Uniform(MAX_RATE + 1),

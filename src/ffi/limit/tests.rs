@@ -10,33 +10,22 @@ use crate::ffi::error::last_error;
 use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh_free};
 use crate::ffi::options::{profsubd_options_free, profsubd_options_new};
 use crate::ffi::status::profsubd_status::*;
-use crate::mesh::{Crease, Mesh, MeshParts};
+use crate::mesh::{Crease, Mesh};
 use crate::options::SubdivOptions;
+use crate::test_support::unit_cube;
 
 /// A closed cube with one semi-sharp crease and a dart.
 fn mesh() -> Mesh {
-    let positions: Vec<DVec3> = (0..8)
-        .map(|k| DVec3::new((k & 1) as f64, ((k >> 1) & 1) as f64, ((k >> 2) & 1) as f64))
-        .collect();
-    Mesh::from_parts(MeshParts {
-        positions,
-        face_sizes: vec![4; 6],
-        face_indices: vec![
-            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
-        ],
-        creases: vec![
-            Crease {
-                vertices: [0, 1],
-                sharpness: 1.5,
-            },
-            Crease {
-                vertices: [6, 7],
-                sharpness: 10.0,
-            },
-        ],
-        ..Default::default()
-    })
-    .unwrap()
+    unit_cube(vec![
+        Crease {
+            vertices: [0, 1],
+            sharpness: 1.5,
+        },
+        Crease {
+            vertices: [6, 7],
+            sharpness: 10.0,
+        },
+    ])
 }
 
 fn table(quantity: i32) -> *mut profsubd_stencil_table {

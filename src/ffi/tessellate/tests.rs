@@ -2,30 +2,18 @@
 
 use std::ptr::{null, null_mut};
 
-use glam::DVec3;
-
 use super::*;
 use crate::eval::Evaluator;
 use crate::ffi::error::last_error;
 use crate::ffi::evaluator::{profsubd_evaluator_free, profsubd_evaluator_new};
 use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh_free};
 use crate::ffi::status::profsubd_status::*;
-use crate::mesh::{Mesh, MeshParts};
+use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
+use crate::test_support::unit_cube;
 
 fn cube() -> Mesh {
-    let positions = (0..8)
-        .map(|k| DVec3::new((k & 1) as f64, ((k >> 1) & 1) as f64, ((k >> 2) & 1) as f64))
-        .collect();
-    Mesh::from_parts(MeshParts {
-        positions,
-        face_sizes: vec![4; 6],
-        face_indices: vec![
-            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
-        ],
-        ..Default::default()
-    })
-    .unwrap()
+    unit_cube(Vec::new())
 }
 
 fn evaluator() -> *mut profsubd_evaluator {

@@ -178,6 +178,19 @@ python_packages() {
     python3 -c 'import pxr.Usd, trimesh; print("usd-core and trimesh present")'
 }
 
+# The Python package (python/): built and installed as a user does (`pip install ./python`:
+# cargo build --release of this tree, the library bundled in a wheel) into a temporary
+# target, then its pytest suite runs against that copy, checking its bytes against the CLI's.
+python_package() {
+    if ! python3 -c 'import numpy, pytest' 2>/dev/null; then
+        python3 -m pip install --break-system-packages numpy pytest || python3 -m pip install numpy pytest
+    fi
+    local site="$PREFIX_ROOT/python-site"
+    python3 -m pip install --no-deps --no-build-isolation --target "$site" ./python
+    PYTHONPATH="$site" PROFSUBD_CLI="${CARGO_TARGET_DIR:-$ROOT/target}/release/profsubd" \
+        python3 -m pytest -q -p no:cacheprovider python/tests
+}
+
 example_pkg_config() {
     local dir="$PREFIX_ROOT/example-pkg-config" pcdir
     mkdir -p "$dir"
@@ -212,6 +225,7 @@ step "cmake --install into a temporary prefix" install_package
 step "C example via find_package(profsubd) (installed package)" example_find_package
 step "C example via pkg-config (installed package)" example_pkg_config
 step "fresh sources, plain cargo build: C program linked against target/release runs" build_tree_linking
+step "Python package: pip install ./python, pytest python/tests" python_package
 
 section "summary"
 echo "total time: $((SECONDS - START)) s"

@@ -226,6 +226,10 @@ step "C example via find_package(profsubd) (installed package)" example_find_pac
 step "C example via pkg-config (installed package)" example_pkg_config
 step "fresh sources, plain cargo build: C program linked against target/release runs" build_tree_linking
 step "Python package: pip install ./python, pytest python/tests" python_package
+# FreeCAD, OpenSCAD (and Blender) integration tests: heavy installs, opt-in.
+if [ "${PROFSUBD_INTEGRATIONS:-0}" = 1 ]; then
+    step "integrations (scripts/test_integrations.sh)" bash scripts/test_integrations.sh
+fi
 
 section "summary"
 echo "total time: $((SECONDS - START)) s"

@@ -111,7 +111,10 @@ class Evaluator(Handle):
         """Exact limit of every control vertex: ``(p, du, dv, has_surface)``, (n, 3) each
         (derivatives along the vertex's first face); NaN where a vertex has no limit."""
         needed = ctypes.c_size_t()
-        lib.profsubd_evaluator_limit_vertices_masked(self._ptr, 0, None, None, None, None, 0, ctypes.byref(needed))
+        status = lib.profsubd_evaluator_limit_vertices_masked(self._ptr, 0, None, None, None, None, 0,
+                                                              ctypes.byref(needed))
+        if status not in (0, 7):  # 7: PROFSUBD_ERROR_BUFFER_TOO_SMALL, the count written
+            check(status)
         n = needed.value
         p, du, dv = (np.empty((n, 3)) for _ in range(3))
         has = np.empty(n, np.uint8)

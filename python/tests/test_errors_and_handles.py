@@ -10,7 +10,7 @@ import profsubd
 from profsubd import _handle, _lib
 from profsubd.errors import ERRORS
 
-from conftest import CUBE_FACES, REPO, cube_points
+from conftest import CUBE_FACES, cube_points
 
 
 def test_one_error_class_per_status_of_the_header():

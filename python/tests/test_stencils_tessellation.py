@@ -8,7 +8,6 @@ import pytest
 
 import profsubd
 
-from conftest import cube_points
 
 
 def test_stencils_reproduce_limit_positions_and_targets():

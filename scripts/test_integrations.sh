@@ -24,23 +24,8 @@ trap 'rm -rf "$WORK"' EXIT
 SITE="$WORK/site"
 export PATH="$HOME/.cargo/bin:$PATH"
 
-step() {
-    local title="$1"
-    shift
-    printf '\n==================== %s ====================\n' "$title"
-    local t0=$SECONDS
-    set +e
-    (set -e; "$@")
-    local rc=$?
-    if [ $rc -eq 0 ]; then
-        passed=$((passed + 1))
-        echo "--> ok: $title ($((SECONDS - t0)) s)"
-    else
-        failed=$((failed + 1))
-        failed_steps+=("$title")
-        echo "--> FAILED (exit $rc): $title ($((SECONDS - t0)) s)"
-    fi
-}
+# section, step
+source "$ROOT/scripts/steps.sh"
 
 install_programs() {
     local missing=()
@@ -106,7 +91,7 @@ step "FreeCAD: integrations/freecad/test_freecad.py in freecadcmd" freecad_test
 step "OpenSCAD: examples/openscad/profsubd_csg.scad, openscad -o out.stl" openscad_test
 step "Blender: integrations/blender/run_tests.sh" blender_test
 
-printf '\n==================== summary ====================\n'
+section "summary"
 echo "total time: $((SECONDS - START)) s"
 for s in "${failed_steps[@]}"; do
     echo "failed: $s"

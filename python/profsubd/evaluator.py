@@ -154,6 +154,17 @@ class Evaluator(Handle):
         return Tessellation._create(lib.profsubd_tessellation_new_uniform, self._ptr, int(rate or 4), int(quads))
 
 
+def _array(what: str, count: int, dtype: Any, width: int, doc: str) -> property:
+    """A property copying ``profsubd_tessellation_get_WHAT``; ``count`` indexes the counts
+    (vertices, polygons, face-vertex entries, normals)."""
+
+    def get(self: "Tessellation") -> np.ndarray:
+        fn = getattr(lib, f"profsubd_tessellation_get_{what}")
+        return copy_out(fn, self._ptr, self._counts()[count], dtype, width=width)
+
+    return property(get, doc=doc)
+
+
 class Tessellation(Handle):
     """Polygons on the limit surface (``profsubd_tessellation``), made by
     :meth:`Evaluator.tessellate`; counter-clockwise seen from where ``du x dv`` points."""
@@ -165,58 +176,23 @@ class Tessellation(Handle):
         check(lib.profsubd_tessellation_counts(self._ptr, *(ctypes.byref(x) for x in c)))
         return tuple(x.value for x in c)  # type: ignore[return-value]
 
-    def _get(self, what: str, count: int, dtype: Any, width: int) -> np.ndarray:
-        return copy_out(getattr(lib, f"profsubd_tessellation_get_{what}"), self._ptr, count, dtype, width=width)
-
     @property
     def num_unmet(self) -> int:
         """Parametric faces that missed the tolerance at the maximum rate (adaptive)."""
         return self._counts()[4]
 
-    @property
-    def points(self) -> np.ndarray:
-        """Vertex positions on the limit surface, (n, 3)."""
-        return self._get("positions", self._counts()[0], np.float64, 3)
-
-    @property
-    def vertex_normals(self) -> np.ndarray:
-        """One unit normal per vertex, (n, 3) (split normals averaged)."""
-        return self._get("vertex_normals", self._counts()[0], np.float64, 3)
-
-    @property
-    def normals(self) -> np.ndarray:
-        """Unit normals split along infinitely sharp creases, (m, 3); see :attr:`face_normals`."""
-        return self._get("normals", self._counts()[3], np.float64, 3)
-
-    @property
-    def face_sizes(self) -> np.ndarray:
-        """Polygon sizes (3 or 4), (F,)."""
-        return self._get("face_sizes", self._counts()[1], np.uint32, 1)
-
-    @property
-    def face_vertices(self) -> np.ndarray:
-        """Polygon vertex indices, polygon after polygon."""
-        return self._get("face_vertices", self._counts()[2], np.uint32, 1)
-
-    @property
-    def face_normals(self) -> np.ndarray:
-        """Index into :attr:`normals` of every polygon corner."""
-        return self._get("face_normals", self._counts()[2], np.uint32, 1)
-
-    @property
-    def face_ptex(self) -> np.ndarray:
-        """Parametric (Ptex) face of every polygon."""
-        return self._get("face_ptex", self._counts()[1], np.uint32, 1)
-
-    @property
-    def corner_uv(self) -> np.ndarray:
-        """(u, v) of every polygon corner in its Ptex face, (corners, 2)."""
-        return self._get("corner_uv", self._counts()[2], np.float64, 2)
-
-    @property
-    def vertex_points(self) -> np.ndarray:
-        """Where each vertex was evaluated: ``(ptex face, u, v)`` rows, (n, 3)."""
-        return self._get("vertex_points", self._counts()[0], np.float64, 3)
+    points = _array("positions", 0, np.float64, 3, "Vertex positions on the limit surface, (n, 3).")
+    vertex_normals = _array("vertex_normals", 0, np.float64, 3,
+                            "One unit normal per vertex, (n, 3) (split normals averaged).")
+    normals = _array("normals", 3, np.float64, 3,
+                     "Unit normals split along infinitely sharp creases, (m, 3); see :attr:`face_normals`.")
+    face_sizes = _array("face_sizes", 1, np.uint32, 1, "Polygon sizes (3 or 4), (F,).")
+    face_vertices = _array("face_vertices", 2, np.uint32, 1, "Polygon vertex indices, polygon after polygon.")
+    face_normals = _array("face_normals", 2, np.uint32, 1, "Index into :attr:`normals` of every polygon corner.")
+    face_ptex = _array("face_ptex", 1, np.uint32, 1, "Parametric (Ptex) face of every polygon.")
+    corner_uv = _array("corner_uv", 2, np.float64, 2, "(u, v) of every polygon corner in its Ptex face, (corners, 2).")
+    vertex_points = _array("vertex_points", 0, np.float64, 3,
+                           "Where each vertex was evaluated: ``(ptex face, u, v)`` rows, (n, 3).")
 
     @property
     def triangles(self) -> np.ndarray:

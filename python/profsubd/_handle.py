@@ -30,7 +30,7 @@ class Handle:
     _kind = ""  # the C type, e.g. "profsubd_mesh"; its free function is KIND_free
     _free_name = ""  # a free function not named KIND_free
 
-    def __init__(self, address: int) -> None:
+    def __init__(self, address: Optional[int]) -> None:
         if not address:
             raise ValueError(f"{self._kind}: NULL handle")
         self._address: Optional[int] = address
@@ -70,7 +70,7 @@ class Handle:
         self.close()
 
 
-def copy_out(fn: Callable[..., int], handle: int, count: int, dtype: Any, *pre: Any, width: int = 1) -> np.ndarray:
+def copy_out(fn: Callable[..., int], handle: Any, count: int, dtype: Any, *pre: Any, width: int = 1) -> np.ndarray:
     """``fn(handle, *pre, out, capacity, &needed)`` for ``count`` elements of ``width`` values
     each (the C function's capacity counts elements): a (count,) or (count, width) array."""
     out = np.empty(count * width, dtype=dtype)

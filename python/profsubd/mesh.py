@@ -6,7 +6,7 @@ from __future__ import annotations
 import ctypes
 import os
 from dataclasses import dataclass, fields
-from typing import Any, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -199,8 +199,9 @@ class Mesh(Handle):
         """Topology report: boundary, non-manifold and orientation findings, Euler number."""
         rep = new_struct("profsubd_mesh_report")
         check(lib.profsubd_mesh_check(self._ptr, ctypes.byref(rep)))
-        values = {f.name: getattr(rep, f.name) for f in fields(MeshReport)}
-        return MeshReport(**{k: bool(v) if k.startswith("is_") else int(v) for k, v in values.items()})
+        values: Dict[str, Any] = {f.name: getattr(rep, f.name) for f in fields(MeshReport)}
+        typed: Dict[str, Any] = {k: bool(v) if k.startswith("is_") else int(v) for k, v in values.items()}
+        return MeshReport(**typed)
 
     def osd_hazards(self, kind: str, **options: Any) -> Tuple[np.ndarray, np.ndarray]:
         """Vertices and faces of OpenSubdiv 3.5 hazard ``kind`` (a key of :data:`HAZARDS`)."""

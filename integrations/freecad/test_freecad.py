@@ -91,6 +91,19 @@ def main():
     got = check_solid("sketch_revolve", doc, {"construction": "revolve", "caps": "flat", "samples_profile": 8}, [cup])
     with profsubd.revolve(wall, caps="flat", samples_profile=8) as ref:
         assert np.allclose(got, ref.targets, rtol=0, atol=1e-10), "sketch revolve != revolve from points"
+    # A curved edge (an arc bulging outwards, (1, 0) to (1, 2) about (1, 1)) is sampled.
+    import FreeCAD
+    import Part
+
+    bulge = doc.addObject("Sketcher::SketchObject", "Bulge")
+    bulge.Placement = cup.Placement
+    bulge.addGeometry(Part.ArcOfCircle(Part.Circle(FreeCAD.Vector(1, 1, 0), FreeCAD.Vector(0, 0, 1), 1),
+                                       -np.pi / 2, np.pi / 2))
+    doc.recompute()
+    arc = pf.sketch_curve(bulge)
+    assert len(arc) == 8 and np.allclose(arc[[0, -1]], [[1, 0], [1, 2]], atol=1e-12), arc
+    assert np.allclose(np.linalg.norm(arc - [1, 1], axis=1), 1, atol=1e-12) and np.all(arc[:, 0] >= 1 - 1e-12), arc
+    check_solid("sketch_arc_revolve", doc, {"construction": "revolve", "caps": "flat", "samples_profile": 8, "samples_around": 16}, [bulge])
     print("freecad: ok")
 
 

@@ -17,7 +17,7 @@ import ctypes
 import os
 import re
 from pathlib import Path
-from typing import Any, Dict, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple
 
 _HERE = Path(__file__).resolve().parent
 _REPO = _HERE.parent.parent
@@ -32,6 +32,11 @@ _SCALARS: Dict[str, Any] = {
     "int64_t": ctypes.c_int64,
     "uint64_t": ctypes.c_uint64,
     "int": ctypes.c_int,
+    "bool": ctypes.c_bool,
+    "int8_t": ctypes.c_int8,
+    "int16_t": ctypes.c_int16,
+    "uint16_t": ctypes.c_uint16,
+    "char": ctypes.c_char,
 }
 
 
@@ -65,33 +70,63 @@ def _strip_comments(text: str) -> str:
     return re.sub(r"//[^\n]*", " ", text)
 
 
-def _ctype(decl: str, structs: Dict[str, Any]) -> Any:
+class Unsupported(Exception):
+    """A declaration this reader cannot map to ctypes (its function is left out)."""
+
+
+def _ctype(decl: str, header: "Header") -> Any:
     """The ctypes type of a C type as cbindgen writes it (``const double *``, ``struct x **``)."""
-    decl = decl.replace("const ", "").strip()
+    decl = re.sub(r"\bconst\b", " ", decl).strip()
     stars = decl.count("*")
-    base = decl.replace("*", "").strip()
-    base = re.sub(r"^(struct|enum)\s+", "", base)
+    base = re.sub(r"^(struct|enum)\s+", "", decl.replace("*", " ").strip())
     if stars == 0:
-        if base in structs:
-            return structs[base]
-        if base.startswith("profsubd_"):  # an enum passed by value
-            return ctypes.c_int32
-        return _SCALARS[base]
+        if base in header.structs:
+            return header.structs[base]
+        if base in header.enums:
+            return ctypes.c_int32  # passed as int32_t by the C API's rules
+        if base in header.callback_types:
+            return ctypes.c_void_p
+        if base in _SCALARS:
+            return _SCALARS[base]
+        raise Unsupported(f"type {decl!r}")
     if stars == 1 and base == "char":
         return ctypes.c_char_p
     # Pointers are passed as addresses (NumPy buffers, byref, handles): no pointee checks.
     return ctypes.c_void_p
 
 
-def _split_decl(param: str) -> Tuple[str, str]:
-    m = re.match(r"^(.*?)(\w+)$", param.strip())
-    if not m:
-        raise ImportError(f"profsubd.h: cannot read parameter {param!r}")
-    return m.group(1).strip(), m.group(2)
+def _split_top(text: str, sep: str) -> List[str]:
+    """``text`` split at ``sep`` outside parentheses and braces."""
+    parts: List[str] = []
+    cur: List[str] = []
+    depth = 0
+    for ch in text:
+        depth += ch in "({"
+        depth -= ch in ")}"
+        if ch == sep and depth == 0:
+            parts.append("".join(cur))
+            cur = []
+        else:
+            cur.append(ch)
+    parts.append("".join(cur))
+    return [p.strip() for p in parts if p.strip()]
+
+
+def _declarator(param: str, header: "Header") -> Tuple[Any, str]:
+    """``(ctypes type, name)`` of ``type name``, ``type name[N]`` or a function pointer."""
+    fn = re.search(r"\(\s*\*\s*(\w+)\s*\)\s*\(", param)
+    if fn:
+        return ctypes.c_void_p, fn.group(1)
+    m = re.match(r"^(.*?)(\w+)\s*(?:\[\s*(\d+)\s*\])?$", param.strip(), flags=re.S)
+    if not m or not m.group(1).strip():
+        raise Unsupported(f"declaration {param!r}")
+    t = _ctype(m.group(1), header)
+    return (t * int(m.group(3)) if m.group(3) else t), m.group(2)
 
 
 class Header:
-    """What ``profsubd.h`` declares: constants, struct types, function signatures."""
+    """What ``profsubd.h`` declares: constants, struct types, function signatures.
+    Declarations it cannot map (``unsupported``) are left out rather than failing the import."""
 
     def __init__(self, text: str) -> None:
         code = _strip_comments(text)
@@ -103,24 +138,32 @@ class Header:
             self.constants.update(members)
         for k, v in re.findall(r"#define\s+(PROFSUBD_\w+)\s+(\d+)", code):
             self.constants[k] = int(v)
+        self.callback_types = set(re.findall(r"typedef[^;{]*?\(\s*\*\s*(\w+)\s*\)\s*\(", code))
+        self.unsupported: Dict[str, str] = {}
         self.structs: Dict[str, Any] = {}
         for name, body in re.findall(r"typedef\s+struct\s+(\w+)\s*\{(.*?)\}\s*\w+\s*;", code, flags=re.S):
-            fields = []
-            for member in body.split(";"):
-                if member.strip():
-                    ctype_decl, field = _split_decl(member)
-                    fields.append((field, _ctype(ctype_decl, self.structs)))
+            try:
+                fields = [tuple(reversed(_declarator(m, self))) for m in _split_top(body, ";")]
+            except Unsupported as e:
+                self.unsupported[name] = str(e)
+                continue
             self.structs[name] = type(name, (ctypes.Structure,), {"_fields_": fields})
+        # Function declarations: what is left without typedefs and preprocessor lines.
+        rest = re.sub(r"typedef\s+(struct|enum)\s+\w+\s*\{.*?\}\s*\w+\s*;", " ", code, flags=re.S)
+        rest = re.sub(r"^\s*#.*$", " ", rest, flags=re.M)
+        rest = re.sub(r'extern\s+"C"\s*\{', " ", rest)
         self.functions: Dict[str, Tuple[Any, list]] = {}
-        for ret, name, params in re.findall(
-            r"((?:const\s+)?(?:enum\s+|struct\s+)?\w+\s*\**)\s*(profsubd_\w+)\s*\(([^)]*)\)\s*;", code
-        ):
-            params = params.strip()
-            argtypes = []
-            if params and params != "void":
-                argtypes = [_ctype(_split_decl(p)[0], self.structs) for p in params.split(",")]
-            ret = ret.strip()
-            restype = None if ret == "void" else _ctype(ret, self.structs)
+        for stmt in _split_top(rest, ";"):
+            m = re.search(r"([\w\s\*]*?)\b(profsubd_\w+)\s*\((.*)\)\s*$", stmt, flags=re.S)
+            if not m or stmt.lstrip("} \n").startswith("typedef"):
+                continue
+            ret, name, params = m.group(1).strip().lstrip("}").strip(), m.group(2), m.group(3).strip()
+            try:
+                argtypes = [] if params in ("", "void") else [_declarator(p, self)[0] for p in _split_top(params, ",")]
+                restype = None if ret == "void" else _ctype(ret, self)
+            except Unsupported as e:
+                self.unsupported[name] = str(e)
+                continue
             self.functions[name] = (restype, argtypes)
 
 
@@ -136,7 +179,9 @@ class _Functions:
         try:
             restype, argtypes = HEADER.functions[name]
         except KeyError:
-            raise AttributeError(f"{name} is not declared in profsubd.h") from None
+            why = HEADER.unsupported.get(name)
+            raise AttributeError(f"{name}: " + (f"not callable from Python ({why})" if why
+                                                 else "not declared in profsubd.h")) from None
         fn = getattr(_dll, name)
         fn.restype = restype
         fn.argtypes = argtypes

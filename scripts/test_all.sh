@@ -19,29 +19,8 @@ passed=0
 failed=0
 failed_steps=()
 
-section() {
-    printf '\n==================== %s ====================\n' "$1"
-}
-
-# step TITLE FUNCTION: runs FUNCTION with `set -e` in a subshell, records the outcome and
-# goes on, so one failure does not hide the others.
-step() {
-    local title="$1"
-    shift
-    section "$title"
-    local t0=$SECONDS
-    set +e
-    (set -e; "$@")
-    local rc=$?
-    if [ $rc -eq 0 ]; then
-        passed=$((passed + 1))
-        echo "--> ok: $title ($((SECONDS - t0)) s)"
-    else
-        failed=$((failed + 1))
-        failed_steps+=("$title")
-        echo "--> FAILED (exit $rc): $title ($((SECONDS - t0)) s)"
-    fi
-}
+# section, step
+source "$ROOT/scripts/steps.sh"
 
 install_dependencies() {
     local missing=()
@@ -178,6 +157,19 @@ python_packages() {
     python3 -c 'import pxr.Usd, trimesh; print("usd-core and trimesh present")'
 }
 
+# The Python package (python/): built and installed as a user does (`pip install ./python`:
+# cargo build --release of this tree, the library bundled in a wheel) into a temporary
+# target, then its pytest suite runs against that copy, checking its bytes against the CLI's.
+python_package() {
+    if ! python3 -c 'import numpy, pytest' 2>/dev/null; then
+        python3 -m pip install --break-system-packages numpy pytest || python3 -m pip install numpy pytest
+    fi
+    local site="$PREFIX_ROOT/python-site"
+    python3 -m pip install --no-deps --no-build-isolation --target "$site" ./python
+    PYTHONPATH="$site" PROFSUBD_CLI="${CARGO_TARGET_DIR:-$ROOT/target}/release/profsubd" \
+        python3 -m pytest -q -p no:cacheprovider python/tests
+}
+
 example_pkg_config() {
     local dir="$PREFIX_ROOT/example-pkg-config" pcdir
     mkdir -p "$dir"
@@ -212,6 +204,11 @@ step "cmake --install into a temporary prefix" install_package
 step "C example via find_package(profsubd) (installed package)" example_find_package
 step "C example via pkg-config (installed package)" example_pkg_config
 step "fresh sources, plain cargo build: C program linked against target/release runs" build_tree_linking
+step "Python package: pip install ./python, pytest python/tests" python_package
+# FreeCAD, OpenSCAD (and Blender) integration tests: heavy installs, opt-in.
+if [ "${PROFSUBD_INTEGRATIONS:-0}" = 1 ]; then
+    step "integrations (scripts/test_integrations.sh)" bash scripts/test_integrations.sh
+fi
 
 section "summary"
 echo "total time: $((SECONDS - START)) s"

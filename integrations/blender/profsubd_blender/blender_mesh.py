@@ -100,8 +100,9 @@ def auto_quality(tagged):
     3 (Blender's default) where that is exact to single precision; OpenSubdiv resolves a
     semi-sharp feature of sharpness s only when isolating past level s; it approximates the
     limit at a one-face corner under the edge-only rule and at darts, closer with each level
-    (one-face corner: 3.9e-3 of the patch at Quality 3, 4.1e-5 at 6, 1.4e-7 at 10; dart of
-    examples/meshes/cube_creased.obj: 3.1e-3 at 3, 1.3e-5 at 10), so those get 10."""
+    (x diagonal at Quality 3 / 6 / 10: one-face corners of a 4 x 4 patch 7.0e-4 / 1.1e-5 /
+    1.6e-7, the darts of examples/meshes/cube_creased.obj 2.5e-3 / 2.0e-4 / 9.1e-6;
+    integrations/blender/test_blender.py), so those get 10."""
     finite = [s for _, s in tagged.creases + tagged.corners if 0.0 < s < objtags.INFINITE]
     quality = max(3, math.ceil(max(finite, default=0.0)) + 1)
     if darts(tagged):

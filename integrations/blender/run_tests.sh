@@ -22,5 +22,9 @@ if [ ! -x "$PROFSUBD_CLI" ]; then
 fi
 "$BLENDER" --version | head -1
 start=$SECONDS
+# The test installs the add-on from a zip into this scratch user folder, as a user would.
+BLENDER_USER_SCRIPTS="$(mktemp -d)"
+export BLENDER_USER_SCRIPTS
+trap 'rm -rf "$BLENDER_USER_SCRIPTS"' EXIT
 "$BLENDER" -b --factory-startup --python-exit-code 1 --python integrations/blender/test_blender.py
 echo "integrations/blender/run_tests.sh: $((SECONDS - start)) s"

@@ -38,13 +38,37 @@ BOUND = 1e-6  # x diagonal; single precision gives ~1e-7
 # At darts OpenSubdiv's patches are not exact (`profsubd check`: 7.4e-6 x diagonal at
 # isolation 10 for Far's PatchTable): those vertices are held to this bound instead.
 DART_BOUND = 2e-5
-sys.path.insert(0, HERE)
+TMP = tempfile.mkdtemp(prefix="profsubd_blender_test_")
 
+
+def install_addon():
+    """Install the add-on as a user would (zip, Preferences > Add-ons > Install, enable) when
+    BLENDER_USER_SCRIPTS points to a scratch folder (run_tests.sh sets one); otherwise import
+    it from the source tree, leaving the user's Blender configuration alone."""
+    scripts = os.environ.get("BLENDER_USER_SCRIPTS")
+    if not scripts:
+        print("NOTE: BLENDER_USER_SCRIPTS unset: add-on imported from the source tree, not installed")
+        sys.path.insert(0, HERE)
+        import profsubd_blender
+
+        profsubd_blender.register()
+        return
+    import addon_utils
+    import shutil
+
+    archive = shutil.make_archive(os.path.join(TMP, "profsubd_blender"), "zip", HERE, "profsubd_blender")
+    bpy.ops.preferences.addon_install(filepath=archive)
+    module = addon_utils.enable("profsubd_blender", default_set=True)
+    if module is None or not hasattr(bpy.types, "IMPORT_SCENE_OT_profsubd_obj"):
+        raise RuntimeError("the add-on did not install and enable from its zip")
+    print(f"add-on installed from {os.path.basename(archive)} into {scripts}: {module.bl_info['name']}")
+
+
+install_addon()
 import profsubd_blender  # noqa: E402
 from profsubd_blender import blender_mesh, objtags  # noqa: E402
 
 failures = []
-TMP = tempfile.mkdtemp(prefix="profsubd_blender_test_")
 
 
 def check(cond, what):
@@ -315,7 +339,6 @@ def test_profile_operator():
 
 def main():
     t0 = time.time()
-    profsubd_blender.register()
     files = sorted(glob.glob(os.path.join(ROOT, "examples", "**", "*.obj"), recursive=True))
     check(len(files) >= 10, f"only {len(files)} example OBJ files found")
     clear_scene()

@@ -3,7 +3,8 @@
 # import of every example OBJ, tags, export round trip, and the modifier's limit surface
 # against profsubd's exact limit (see test_blender.py). Installs blender with apt-get when
 # missing and run as root; builds the profsubd command-line tool when missing.
-# Environment: PROFSUBD_CLI (default target/release/profsubd), BLENDER (default blender).
+# Environment: PROFSUBD_CLI (default target/release/profsubd), BLENDER (default blender),
+# PYTHONPATH (where Blender's Python finds the profsubd package, if not installed).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
@@ -26,5 +27,7 @@ start=$SECONDS
 BLENDER_USER_SCRIPTS="$(mktemp -d)"
 export BLENDER_USER_SCRIPTS
 trap 'rm -rf "$BLENDER_USER_SCRIPTS"' EXIT
-"$BLENDER" -b --factory-startup --python-exit-code 1 --python integrations/blender/test_blender.py
+# --python-use-system-env: PYTHONPATH reaches Blender's Python (for the profsubd package).
+"$BLENDER" -b --factory-startup --python-use-system-env --python-exit-code 1 \
+    --python integrations/blender/test_blender.py
 echo "integrations/blender/run_tests.sh: $((SECONDS - start)) s"

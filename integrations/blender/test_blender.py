@@ -327,6 +327,18 @@ def test_profile_operator():
     profsubd_blender.export_file(obj, path)
     clear_scene()
     run_file(path, "profile operator (built-in bottle)")
+    # A JSON input goes to profsubd.profile as keyword arguments: the vase example's JSON
+    # gives the committed vase.obj.
+    vase = os.path.join(ROOT, "examples", "profiles", "vase")
+    r = bpy.ops.mesh.profsubd_profile(curves_json=vase + ".json")
+    check(r == {"FINISHED"}, f"profile operator on vase.json returned {r}")
+    profsubd_blender.export_file(bpy.data.objects["profsubd_profile"], path)
+    a, b = os.path.join(TMP, "a.obj"), os.path.join(TMP, "b.obj")
+    cli("convert", vase + ".obj", "-o", a)
+    cli("convert", path, "-o", b)
+    with open(a) as fa, open(b) as fb:
+        check(fa.read() == fb.read(), "profile operator on vase.json does not give examples/profiles/vase.obj")
+    clear_scene()
     # A bad input is reported, not raised.
     bad = write("bad.json", '{"c1": [[0, 0]], "c2": [[0, 0]]}')
     try:

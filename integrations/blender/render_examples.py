@@ -67,6 +67,10 @@ def setup_scene():
         scene.world = bpy.data.worlds.new("World")
     scene.world.color = (1.0, 1.0, 1.0)
     scene.view_settings.view_transform = "Standard"
+    # No date, render time, host name ... in the PNG's metadata: same input, same bytes.
+    for prop in scene.render.bl_rna.properties:
+        if prop.identifier.startswith("use_stamp"):
+            setattr(scene.render, prop.identifier, False)
 
 
 def crease_curves(obj, name, select, color, radius):

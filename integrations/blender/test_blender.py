@@ -290,6 +290,26 @@ def test_limitations():
     clear_scene()
 
 
+def test_plain_mesh():
+    """A mesh made in Blender (no profsubd properties) exports its creases and modifier rule."""
+    bpy.ops.mesh.primitive_cube_add()
+    obj = bpy.context.active_object
+    obj.data.edges[0].crease = 0.5
+    obj.modifiers.new("Subdivision", "SUBSURF").boundary_smooth = "ALL"
+    out = os.path.join(TMP, "plain.obj")
+    r = bpy.ops.export_scene.profsubd_obj(filepath=out)
+    check(r == {"FINISHED"}, f"export of a plain cube returned {r}")
+    with open(out) as f:
+        tagged = objtags.parse(f.read())
+    e = tuple(obj.data.edges[0].vertices)
+    check(tagged.creases == [(e, 2.5)] and tagged.boundary == objtags.BOUNDARY_EDGE_ONLY,
+          f"plain cube exported {tagged.creases}, boundary {tagged.boundary}")
+    check(len(tagged.positions) == 8 and len(tagged.faces) == 6, "plain cube: wrong counts")
+    report = json.loads(cli("check", "--json", out))
+    check(report["is_manifold"] and report["is_closed"], "profsubd check: plain cube not a closed manifold")
+    clear_scene()
+
+
 def test_up_axis():
     path = os.path.join(ROOT, "examples", "meshes", "cube_creased.obj")
     obj = import_obj(path, up_axis="Y")
@@ -362,6 +382,7 @@ def main():
         worst = [max(worst[0], v), max(worst[1], d), worst[2] + n]
     test_quality()
     test_limitations()
+    test_plain_mesh()
     test_up_axis()
     test_profile_operator()
     print(f"worst over {len(files)} examples and the generated meshes: control vertices {worst[0]:.2e}, "

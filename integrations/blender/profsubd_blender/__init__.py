@@ -121,7 +121,11 @@ def profile_model(**kwargs):
     model = profsubd.profile(**kwargs)
     fd, path = tempfile.mkstemp(suffix=".obj", prefix="profsubd_profile_")
     os.close(fd)
-    model.mesh.write_obj(path)
+    try:
+        model.mesh.write_obj(path)
+    except BaseException:
+        os.remove(path)
+        raise
     return path
 
 

@@ -9,7 +9,6 @@ every OBJ under examples/ is rendered; the picture of examples/DIR/NAME.obj is O
 """
 
 import glob
-import math
 import os
 import sys
 

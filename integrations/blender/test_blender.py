@@ -39,6 +39,9 @@ BOUND = 1e-6  # x diagonal; single precision gives ~1e-7
 # At darts OpenSubdiv's patches are not exact (`profsubd check`: 7.4e-6 x diagonal at
 # isolation 10 for Far's PatchTable): those vertices are held to this bound instead.
 DART_BOUND = 2e-5
+# OpenSubdiv's shapes in single precision: catmark_pole360 (valence 360) 6.6e-6, catmark_flap
+# (coordinates 5.9x its diagonal) 1.05e-6 at every Quality.
+SHAPES_BOUND = 1e-5
 TMP = tempfile.mkdtemp(prefix="profsubd_blender_test_")
 
 
@@ -168,9 +171,17 @@ def check_round_trip(path, obj):
                   f"{path}: export differs from profsubd's bytes")
 
 
+def check_report(path):
+    """`profsubd check --json`, which exits with 2 for a mesh that loads but is not a manifold."""
+    r = subprocess.run([CLI, "check", "--json", path], capture_output=True, text=True)
+    if r.returncode not in (0, 2):
+        raise RuntimeError(f"profsubd check {path}: {r.stderr.strip()}")
+    return json.loads(r.stdout)
+
+
 def dart_vertices(path):
     """The vertices where profsubd says OpenSubdiv's patches are not exact (darts)."""
-    report = json.loads(cli("check", "--json", path))
+    report = check_report(path)
     return sorted({v for h in report["osd_hazards"] if h["kind"] in ("dart", "valence2_dart")
                    for v in h["vertices"]})
 
@@ -306,7 +317,7 @@ def test_plain_mesh():
     check(tagged.creases == [(e, 2.5)] and tagged.boundary == objtags.BOUNDARY_EDGE_ONLY,
           f"plain cube exported {tagged.creases}, boundary {tagged.boundary}")
     check(len(tagged.positions) == 8 and len(tagged.faces) == 6, "plain cube: wrong counts")
-    report = json.loads(cli("check", "--json", out))
+    report = check_report(out)
     check(report["is_manifold"] and report["is_closed"], "profsubd check: plain cube not a closed manifold")
     clear_scene()
 
@@ -370,6 +381,49 @@ def test_profile_operator():
         check("profsubd:" in str(err), f"profile operator error unclear: {err}")
 
 
+def osd_shapes(folder):
+    """OpenSubdiv's regression shapes (optional, PROFSUBD_BLENDER_SHAPES=folder): the same
+    comparison, held to SHAPES_BOUND only where the add-on warns of nothing and `profsubd check`
+    lists no hazard for OpenSubdiv's patches; the others are reported."""
+    rows = []
+    for path in sorted(glob.glob(os.path.join(folder, "*.obj"))):
+        name = os.path.basename(path)
+        try:
+            report = check_report(path)
+        except RuntimeError as err:
+            print(f"{name:40s} not read by profsubd: {err}")
+            continue
+        kinds = sorted({h["kind"] for h in report["osd_hazards"]} - {"primvar_limit"})
+        if not report["is_manifold"]:
+            kinds.append("non-manifold")
+        try:
+            obj = import_obj(path)
+        except Exception as err:  # noqa: BLE001 - reported below
+            print(f"{name:40s} import failed: {err}")
+            failures.append(f"{name}: import failed: {err}")
+            continue
+        with open(path) as f:
+            warnings = blender_mesh.limitations(objtags.parse(f.read()))
+        level = 3 if len(obj.data.polygons) <= 1000 else 2
+        try:
+            v_err, d_err, dart_err, n = compare_limit(path, obj, level)
+        except Exception as err:  # noqa: BLE001
+            print(f"{name:40s} not compared: {err}")
+            clear_scene()
+            continue
+        held = not warnings and not kinds
+        if held:
+            check(v_err <= SHAPES_BOUND and d_err <= SHAPES_BOUND, f"{name}: limit off by {v_err:.2e} / {d_err:.2e}")
+        note = "" if held else "  (not held: " + ", ".join(kinds + [w.split(":")[0] for w in warnings]) + ")"
+        print(f"{name:40s} quality {obj.modifiers[0].quality:2d}  vertices {v_err:.2e}  dense ({n:5d}) {d_err:.2e}{note}")
+        rows.append((held, v_err, d_err))
+        clear_scene()
+    held = [r for r in rows if r[0]]
+    if held:
+        print(f"OpenSubdiv shapes: {len(held)} held to the bound, worst {max(r[1] for r in held):.2e} / "
+              f"{max(r[2] for r in held):.2e} x diagonal; {len(rows) - len(held)} reported only")
+
+
 def main():
     t0 = time.time()
     files = sorted(glob.glob(os.path.join(ROOT, "examples", "**", "*.obj"), recursive=True))
@@ -386,6 +440,9 @@ def main():
     test_plain_mesh()
     test_up_axis()
     test_profile_operator()
+    shapes = os.environ.get("PROFSUBD_BLENDER_SHAPES")
+    if shapes:
+        osd_shapes(shapes)
     print(f"worst over {len(files)} examples and the generated meshes: control vertices {worst[0]:.2e}, "
           f"dense ({worst[2]} points) {worst[1]:.2e} x diagonal (bound {BOUND:.0e}); {time.time() - t0:.1f} s")
     if failures:

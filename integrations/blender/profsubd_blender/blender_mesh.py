@@ -97,24 +97,23 @@ def darts(tagged):
 def auto_quality(tagged):
     """The modifier's Quality (Far's adaptive isolation level) for this mesh's limit surface.
 
-    3 (Blender's default) where that is exact to single precision; OpenSubdiv resolves a
-    semi-sharp feature of sharpness s only when isolating past level s; it approximates the
-    limit at a one-face corner under the edge-only rule and at darts, closer with each level
-    (x diagonal at Quality 3 / 6 / 10: one-face corners of a 4 x 4 patch 7.0e-4 / 1.1e-5 /
-    1.6e-7, the darts of examples/meshes/cube_creased.obj 2.5e-3 / 2.0e-4 / 9.1e-6;
-    integrations/blender/test_blender.py), so those get 10."""
-    finite = [s for _, s in tagged.creases + tagged.corners if 0.0 < s < objtags.INFINITE]
-    quality = max(3, math.ceil(max(finite, default=0.0)) + 1)
-    if darts(tagged):
-        quality = 10
+    3 (Blender's default) where that is exact to single precision; 10 (the most Blender
+    allows) with semi-sharp tags, darts or a one-face corner under the edge-only rule, where
+    OpenSubdiv's patches approach the limit level by level (x diagonal at Quality 3 / 6 / 10:
+    one-face corners of a 4 x 4 patch 7.0e-4 / 1.1e-5 / 1.6e-7, the darts of
+    examples/meshes/cube_creased.obj 2.5e-3 / 2.0e-4 / 9.1e-6, integrations/blender/
+    test_blender.py; OpenSubdiv's catmark_rook, creases up to sharpness 8, 2.3e-4 at 7 and
+    1.0e-6 at 8 to 10; catmark_bishop 2.3e-6 at 7, 6.3e-7 at 10)."""
+    if any(0.0 < s < objtags.INFINITE for _, s in tagged.creases + tagged.corners) or darts(tagged):
+        return 10
     if tagged.boundary == objtags.BOUNDARY_EDGE_ONLY:
         faces_at = [0] * len(tagged.positions)
         for f in tagged.faces:
             for v in f:
                 faces_at[v] += 1
         if any(n == 1 for n in faces_at):
-            quality = 10
-    return min(10, quality)
+            return 10
+    return 3
 
 
 def _boundary_smooth(boundary):

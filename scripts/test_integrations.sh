@@ -4,8 +4,8 @@
 #             volume = the tessellation's)
 #   OpenSCAD  examples/openscad/check_csg.py (openscad -o out.stl on profsubd_csg.scad with
 #             profsubd's STL and OFF; watertight and volume checked with trimesh / manifold3d)
-#   Blender   integrations/blender/run_tests.sh, when present (the Blender add-on's own tests)
-# Installs what is missing: Debian packages (freecad openscad python3-pip python3-numpy) when
+#   Blender   integrations/blender/run_tests.sh (the add-on: tags, export, limit vs profsubd)
+# Installs what is missing: Debian packages (freecad blender openscad python3-pip python3-numpy) when
 # run as root or with password-less sudo, the pip packages numpy trimesh manifold3d; builds
 # the Python package as `pip install ./python` does (cargo build --release, library bundled).
 # Heavy (FreeCAD alone is 266 MB of packages): not part of scripts/test_all.sh unless
@@ -14,7 +14,7 @@ set -uo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
-APT_PACKAGES=(freecad openscad python3-pip python3-numpy)
+APT_PACKAGES=(freecad blender openscad python3-pip python3-numpy)
 START=$SECONDS
 passed=0
 failed=0
@@ -75,16 +75,10 @@ freecad_test() {
 
 openscad_test() { PYTHONPATH="$SITE" python3 examples/openscad/check_csg.py "$WORK/openscad"; }
 
-# Hook for the Blender add-on's tests (integrations/blender/, another branch): run when present.
-blender_test() {
-    if [ -f integrations/blender/run_tests.sh ]; then
-        PYTHONPATH="$SITE" PROFSUBD_PYTHON_SITE="$SITE" bash integrations/blender/run_tests.sh
-    else
-        echo "integrations/blender/run_tests.sh not present: Blender not tested"
-    fi
-}
+# The package on PYTHONPATH: the add-on's profile operator is tested too.
+blender_test() { PYTHONPATH="$SITE" PROFSUBD_PYTHON_SITE="$SITE" bash integrations/blender/run_tests.sh; }
 
-step "install freecad, openscad (apt-get)" install_programs
+step "install freecad, blender, openscad (apt-get)" install_programs
 step "pip packages (numpy, trimesh, manifold3d)" pip_packages
 step "Python package (pip install ./python)" python_package
 step "FreeCAD: integrations/freecad/test_freecad.py in freecadcmd" freecad_test

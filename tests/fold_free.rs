@@ -88,7 +88,8 @@ fn ellipsoids_of_several_aspect_ratios_do_not_fold() {
         (1.0, 1.0, 5.0),
     ] {
         let mut previous = f64::INFINITY;
-        for (around, along) in SAMPLINGS {
+        // 128 x 64 is in the full matrix (tests/fold_matrix.rs, ignored in CI).
+        for &(around, along) in &SAMPLINGS[..3] {
             let mut input = ellipsoid(a, b, c, 400);
             input.around = around as u32;
             input.along = along as u32;

@@ -224,7 +224,7 @@ fn generated_matrix() {
 }
 
 #[test]
-#[ignore = "the full matrix (about N s in release): cargo test --release --test fold_matrix -- --ignored"]
+#[ignore = "the full matrix (about 6 min in release): cargo test --release --test fold_matrix -- --ignored"]
 fn generated_matrix_full() {
     let tally = matrix(
         &[(16, 8), (32, 16), (64, 32), (128, 64)],

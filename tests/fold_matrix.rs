@@ -17,32 +17,17 @@
 
 #[path = "support/arc.rs"]
 mod arc;
+#[path = "support/goblet.rs"]
+mod goblet;
 
 use std::f64::consts::TAU;
 use std::path::PathBuf;
 
 use arc::semicircle;
+use goblet::goblet;
 use profsubd::construct::settings::read_json;
 use profsubd::profile::{build, shapes::ellipsoid, ProfileInput};
 use profsubd::{revolve, sweep, Caps, Error, Fitted, RevolveInput, Settings, SweepInput};
-
-/// A goblet: a wide flat foot (radius 3, 0.08 to 0.25 thick) with a smooth pole at its
-/// centre, a thin stem (radius 0.1) and a solid bowl closed by a pole.
-fn goblet() -> Vec<[f64; 2]> {
-    vec![
-        [0.0, 0.0],
-        [3.0, 0.0],
-        [3.05, 0.08],
-        [0.4, 0.25],
-        [0.12, 0.6],
-        [0.1, 2.5],
-        [0.3, 3.2],
-        [1.4, 3.8],
-        [2.0, 5.0],
-        [2.1, 6.0],
-        [0.0, 5.9],
-    ]
-}
 
 /// A bottle with a flat base (a smooth pole at its centre), a shoulder and an open neck.
 fn bottle() -> Vec<[f64; 2]> {

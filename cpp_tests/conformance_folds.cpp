@@ -24,6 +24,8 @@
 //   conformance_folds --examples  every OBJ of examples/profiles and examples/sweeps has no
 //                                 folded face, by Bfr and by profsubd, at both samplings
 //                                 (ctest examples_fold_free).
+//   conformance_folds --fold-free FILE.obj...  every file given has no folded face, by Bfr
+//                                 and by profsubd, at both samplings (scripts/fold_matrix.sh).
 #include "capi_mesh.h"
 #include "osd_shape.h"
 #include "test_support.h"
@@ -376,6 +378,13 @@ int main(int argc, char **argv) {
                 ++files;
             }
         ck.check(files >= 9, "examples/profiles and examples/sweeps hold the example OBJ files");
+        return ck.finish();
+    }
+
+    if (argc > 1 && std::strcmp(argv[1], "--fold-free") == 0) {
+        Checker ck("fold_free_files");
+        for (int i = 2; i < argc; ++i) compare(ck, argv[i], true);
+        ck.check(argc > 2, "--fold-free: give the OBJ files to check");
         return ck.finish();
     }
 

@@ -358,11 +358,22 @@ fn bad_caps_and_angles_are_refused() {
 
 #[test]
 fn capped_wedges_close_at_every_angle_and_sector_size() {
+    let mut refused = Vec::new();
     for na in [4usize, 8, 12] {
         for angle in [30.0, 180.0, 350.0] {
             for profile in [vase(), semicircle(8)] {
-                let s = built(wedge(profile, angle, Caps::Flat, 8, na)).unwrap();
                 let what = format!("{na} around, {angle}°");
+                let s = match built(wedge(profile, angle, Caps::Flat, 8, na)) {
+                    // The coarsest (4 or 8 intervals over 180° or 350°: sector halves
+                    // of one or two quads spanning up to 175°) fold next to the sectors'
+                    // middle: refused by the fold guard, not returned folded.
+                    Err(Error::InvalidArgument(m)) if na <= 8 && m.contains("would fold") => {
+                        println!("{what}: {m}");
+                        refused.push(what);
+                        continue;
+                    }
+                    r => r.unwrap(),
+                };
                 let r = check(&s.mesh);
                 assert_eq!(r.euler_characteristic, 2, "{what}");
                 assert!(r.is_manifold() && r.is_closed() && r.is_consistently_oriented());
@@ -383,6 +394,8 @@ fn capped_wedges_close_at_every_angle_and_sector_size() {
             assert!(relative_residual(&s) <= 1e-10);
         }
     }
+    println!("refused: {refused:?}");
+    assert!(refused.len() <= 3, "{refused:?}");
 }
 
 #[test]

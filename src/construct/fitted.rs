@@ -7,7 +7,9 @@ use glam::DVec3;
 
 use crate::construct::design::{DesignLattice, SurfaceReport};
 use crate::construct::settings::Settings;
-use crate::error::Result;
+use crate::error::{Error, Result};
+use crate::eval::folds::{find_folds, FoldSettings};
+use crate::eval::Evaluator;
 use crate::fit::{fit_cage, FitReport, FittedCage};
 use crate::mesh::{Mesh, MeshParts};
 
@@ -36,7 +38,21 @@ impl Fitted {
     /// data points no limit surface reaches (boundary interpolation *none* at an open
     /// boundary); [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
     pub fn fit(parts: MeshParts, settings: &Settings, design: DesignLattice) -> Result<Fitted> {
-        let FittedCage { mesh, targets, fit } = fit_cage(parts, settings.fit_options())?;
+        Fitted::fit_free(parts, settings, design, &[])
+    }
+
+    /// [`Fitted::fit`], except that the vertices flagged in `free` (empty: none) are not
+    /// data points: no data constrain the surface there (inside a flat cap, whose creased
+    /// rim carries its shape), so they keep their cage positions as control points, and
+    /// their limit positions become their targets. An interpolating fit would bend the cap
+    /// to pass through them, overshooting in-plane where the layout's cells change size.
+    pub(crate) fn fit_free(
+        parts: MeshParts,
+        settings: &Settings,
+        design: DesignLattice,
+        free: &[bool],
+    ) -> Result<Fitted> {
+        let FittedCage { mesh, targets, fit } = fit_cage(parts, settings.fit_options(), free)?;
         Ok(Fitted {
             mesh: Arc::new(mesh),
             targets,
@@ -50,5 +66,28 @@ impl Fitted {
     /// first call. Errors: those of the evaluation.
     pub fn surface_report(&self) -> Result<&SurfaceReport> {
         self.design.report(&self.mesh)
+    }
+
+    /// `self` if its limit surface does not fold ([`Fitted::surface_report`]); otherwise an
+    /// [`Error::InvalidArgument`] naming `what`, the folded face count and where the worst
+    /// reversal lies: a construction whose layout is not known to be fold-free for every
+    /// input refuses rather than return a folded surface. Errors: those of the evaluation.
+    pub(crate) fn refuse_folds(self, what: &str) -> Result<Fitted> {
+        let folded = self.surface_report()?.folded_faces;
+        if folded == 0 {
+            return Ok(self);
+        }
+        // Only on refusal: where the worst reversal is, for the message.
+        let ev = Evaluator::new(&self.mesh, &self.mesh.options().resolve())?;
+        let folds = find_folds(&ev, &FoldSettings::default())?;
+        let (face, u, v) = folds.worst_at.unwrap_or((0, 0.5, 0.5));
+        let p = ev.evaluate(face as u32, u, v)?.position;
+        Err(Error::invalid_argument(format!(
+            "{what}: the fitted limit surface would fold in {folded} faces (worst normal \
+             reversal {:.0}° in face {face}, near ({:.6}, {:.6}, {:.6})); refused rather than \
+             returned folded (the fold check of profsubd check --surface); other sample \
+             counts give other layouts",
+            folds.worst_reversal_deg, p.x, p.y, p.z
+        )))
     }
 }

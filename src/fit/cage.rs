@@ -67,13 +67,15 @@ pub struct FittedCage {
 /// Errors: those of [`Mesh::from_parts`] and [`fit_limit`]; [`Error::InvalidArgument`] when
 /// boundary interpolation *none* leaves vertices without a limit surface (see
 /// [`check_limit_exists`]).
-pub fn fit_cage(mut parts: MeshParts, options: FitOptions) -> Result<FittedCage> {
+///
+/// `fixed` (empty, or one flag per vertex): vertices that keep their position as control
+/// point instead ([`fit_limit`]); their limit positions become their data points.
+pub fn fit_cage(mut parts: MeshParts, options: FitOptions, fixed: &[bool]) -> Result<FittedCage> {
     parts.options = options.tags();
     let cage = Mesh::from_parts(parts)?;
     let resolved = options.resolve();
     check_limit_exists(&cage, &resolved)?;
-    let targets = cage.positions().to_vec();
-    let (mesh, fit) = fit_limit(&cage, &resolved, &targets)?;
+    let (mesh, targets, fit) = fit_limit(&cage, &resolved, cage.positions(), fixed)?;
     Ok(FittedCage { mesh, targets, fit })
 }
 
@@ -160,7 +162,7 @@ mod tests {
             BoundaryInterpolation::EdgeAndCorner,
         ] {
             let options = FitOptions::new(boundary, CreaseMethod::Chaikin);
-            let fitted = fit_cage(grid(4, vec![]), options).unwrap();
+            let fitted = fit_cage(grid(4, vec![]), options, &[]).unwrap();
             assert_eq!(fitted.mesh.options(), options.tags());
             assert_eq!(fitted.targets, grid(4, vec![]).positions);
             let limits = crate::eval::limit_stencils(&fitted.mesh, &options.resolve())
@@ -178,7 +180,7 @@ mod tests {
         // Boundary none: the 12 border faces are holes, so the 16 border vertices have no
         // surface; the 9 interior vertices keep the 4 inner faces.
         let none = FitOptions::new(BoundaryInterpolation::None, CreaseMethod::Uniform);
-        let m = message(fit_cage(grid(4, vec![]), none));
+        let m = message(fit_cage(grid(4, vec![]), none, &[]));
         assert!(
             m.contains("of 16 vertices (the first: vertex 0 at (0, 0, 0))"),
             "{m}"
@@ -188,11 +190,11 @@ mod tests {
             "{m}"
         );
         // A tagged hole takes the surface from the corner vertex it alone holds.
-        let m = message(fit_cage(grid(4, vec![0]), FitOptions::default()));
+        let m = message(fit_cage(grid(4, vec![0]), FitOptions::default(), &[]));
         assert!(
             m.contains("of 1 vertex (") && m.contains("all their faces are holes"),
             "{m}"
         );
-        assert!(fit_cage(grid(4, vec![5]), FitOptions::default()).is_ok());
+        assert!(fit_cage(grid(4, vec![5]), FitOptions::default(), &[]).is_ok());
     }
 }

@@ -403,7 +403,11 @@ impl<'a> From<&'a StencilTable> for CsrRef<'a> {
 
 /// Move the control points of `mesh` so that the exact limit position of vertex `i` (under
 /// `options`, with the mesh's creases and corners) is `targets[i]`, to a residual ≤
-/// [`RELATIVE_TOLERANCE`] × the targets' bounding-box diagonal. Topology and tags are kept.
+/// [`RELATIVE_TOLERANCE`] × the targets' bounding-box diagonal; except that a vertex with
+/// `fixed[i]` (`fixed` empty: none) keeps `targets[i]` as its control point (its row of the
+/// system is the identity), where the data leave the surface free (a flat cap's inside).
+/// Topology and tags are kept. Returns the fitted mesh, every vertex's limit position (the
+/// targets, with the fixed vertices' limits in their place) and the report.
 ///
 /// Errors: [`Error::InvalidArgument`] if the target count differs from the vertex count;
 /// [`Error::NumericalFailure`] if the stencil matrix is singular or the tolerance is missed
@@ -413,24 +417,43 @@ pub fn fit_limit(
     mesh: &Mesh,
     options: &SubdivOptions,
     targets: &[DVec3],
-) -> Result<(Mesh, FitReport)> {
-    if targets.len() != mesh.num_vertices() {
+    fixed: &[bool],
+) -> Result<(Mesh, Vec<DVec3>, FitReport)> {
+    if targets.len() != mesh.num_vertices() || !(fixed.is_empty() || fixed.len() == targets.len()) {
         return Err(Error::invalid_argument(format!(
-            "{} targets for a mesh of {} vertices",
+            "{} targets ({} fixed flags) for a mesh of {} vertices",
             targets.len(),
+            fixed.len(),
             mesh.num_vertices()
         )));
     }
-    let table = limit_stencils(mesh, options)?;
+    let limit = limit_stencils(mesh, options)?;
+    let is_fixed = |i: usize| fixed.get(i).copied().unwrap_or(false);
+    let mut system = StencilTable::new();
+    for i in 0..targets.len() {
+        let (a, b) = (limit.offsets[i] as usize, limit.offsets[i + 1] as usize);
+        if is_fixed(i) {
+            system.indices.push(i as u32);
+            system.weights.push(1.0);
+        } else {
+            system.indices.extend_from_slice(&limit.indices[a..b]);
+            system.weights.extend_from_slice(&limit.weights[a..b]);
+        }
+        system.offsets.push(system.indices.len() as u32);
+    }
     let (lo, hi) = targets.iter().fold(
         (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
         |(lo, hi), p| (lo.min(*p), hi.max(*p)),
     );
     let tolerance = RELATIVE_TOLERANCE * (hi - lo).length().max(f64::MIN_POSITIVE);
-    let (x, report) = solve((&table).into(), targets, tolerance)?;
+    let (x, report) = solve((&system).into(), targets, tolerance)?;
+    let limits = CsrRef::from(&limit).apply(&x);
+    let reached = (0..targets.len())
+        .map(|i| if is_fixed(i) { limits[i] } else { targets[i] })
+        .collect();
     let mut parts = mesh.parts().clone();
     parts.positions = x;
-    Ok((Mesh::from_parts(parts)?, report))
+    Ok((Mesh::from_parts(parts)?, reached, report))
 }
 
 #[cfg(test)]

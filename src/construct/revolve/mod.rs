@@ -43,7 +43,7 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 
-use crate::construct::design::{parts_lattice, Design, DesignLattice};
+use crate::construct::design::{parts_lattice, Design, DesignCoord, DesignLattice};
 use crate::construct::equidistribute::place_samples;
 use crate::construct::fitted::Fitted;
 use crate::construct::grid_mesh::{grid_mesh_coords, GridEnd, SweepGrid};
@@ -86,6 +86,13 @@ impl RevolveInput {
     /// [`RevolveInput::mesh_parts`] and the design surface (the surface of revolution of the
     /// profile curve) on every face's lattice ([`crate::construct::design`]).
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
+        let (parts, lattice, _) = self.layout(settings)?;
+        Ok((parts, lattice))
+    }
+
+    /// [`RevolveInput::cage`], and which vertices are free of data (the flat meridian caps'
+    /// inside and axis, [`wedge`]): the fit keeps them as control points.
+    fn layout(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice, Vec<bool>)> {
         let profile = self.profile_curve(settings)?;
         let (grid, ring_s) = self.rings(settings, &profile)?;
         let design = RevolveDesign {
@@ -101,7 +108,11 @@ impl RevolveInput {
             wedge_parts(self, settings, &profile, &grid, &ring_s)?
         };
         let lattice = parts_lattice(&parts, &coords, &design);
-        Ok((parts, lattice))
+        let free = coords
+            .iter()
+            .map(|c| matches!(c, DesignCoord::Planar))
+            .collect();
+        Ok((parts, lattice, free))
     }
 
     /// Check the end kinds against the angle, the caps and `samples_around`.
@@ -293,10 +304,19 @@ impl Design for RevolveDesign<'_> {
 
 /// The surface of revolution of `input` under `settings`, fitted: the exact limit surface
 /// passes through every data point. Errors: those of [`RevolveInput::cage`]
-/// ([`Error::InvalidArgument`] for bad input or settings) and of the fit.
+/// ([`Error::InvalidArgument`] for bad input or settings) and of the fit; and, for a partial
+/// turn, [`Error::InvalidArgument`] if its limit surface folds (the wedge layouts are not
+/// fold-free for every profile and sampling, [`wedge`]; checked by the fold check).
 pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
-    let (parts, design) = input.cage(settings)?;
-    Fitted::fit(parts, settings, design)
+    let (parts, design, free) = input.layout(settings)?;
+    let fitted = Fitted::fit_free(parts, settings, design, &free)?;
+    if input.full_turn() {
+        return Ok(fitted);
+    }
+    fitted.refuse_folds(&format!(
+        "partial revolution ({}°, {} x {} samples)",
+        input.angle_deg, input.samples_around, input.samples_profile
+    ))
 }
 
 #[cfg(test)]

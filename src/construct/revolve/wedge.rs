@@ -57,7 +57,11 @@
 //! Every edge where a flat cap meets the side or another cap is an infinitely sharp crease,
 //! and every vertex where three or more creases meet an infinitely sharp corner. A cap's
 //! data points lie in its plane; behind its creases its limit surface depends only on its own
-//! control points, and their fit is planar too, so the caps are flat in the limit.
+//! control points, and their fit is planar too, so the caps are flat in the limit. A meridian
+//! cap's inner and axis vertices ([`DesignCoord::Planar`]) carry no data: the fit keeps them
+//! at their layout positions as control points (`Fitted::fit_free`), so the cap's inside is
+//! the limit of the unfolded planar grid rather than an interpolant bent through every grid
+//! point (which overshot in the plane where the cells change size, and folded).
 
 use std::collections::HashSet;
 use std::f64::consts::{PI, TAU};

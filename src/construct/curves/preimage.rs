@@ -84,6 +84,10 @@ impl Side {
 /// nodes Newton starts.
 const LATTICE: usize = 32;
 
+/// Largest distance, over the boundary's size, from a point to the map's image for which
+/// Newton's stalled iterate on the square's edge is taken.
+const STALL_TOLERANCE: f64 = 1e-4;
+
 /// Boundary samples per side for the crossing-number test and the self-crossing check.
 const POLYGON_SAMPLES: usize = 128;
 
@@ -305,6 +309,7 @@ impl Boundary {
             if r.length() <= tolerance {
                 return Some(uv);
             }
+            let previous = uv;
             let det = xu.perp_dot(xv);
             if det == 0.0 || !det.is_finite() {
                 return None;
@@ -313,6 +318,11 @@ impl Boundary {
             let du = -(r.perp_dot(xv)) / det;
             let dv = -(xu.perp_dot(r)) / det;
             uv = (uv + DVec2::new(du, dv)).clamp(DVec2::ZERO, DVec2::ONE);
+            // A point just outside the map's image (the boundary polygon is a chordal
+            // approximation of the curves) stalls on the square's edge: its nearest edge point.
+            if uv == previous && r.length() <= STALL_TOLERANCE * self.size {
+                return Some(uv);
+            }
         }
         None
     }

@@ -137,7 +137,7 @@ impl Boundary {
                 (lo.min(*p), hi.max(*p))
             });
         b.size = (hi - lo).length();
-        if !(area.abs() > 1e-9 * b.size * b.size) {
+        if area.is_nan() || area.abs() <= 1e-9 * b.size * b.size {
             return Err(Error::invalid_argument(
                 "the boundary's projection encloses no area (the boundary curves project onto \
                  a line): choose another projection normal",
@@ -225,7 +225,7 @@ impl Boundary {
                 let u = i as f64 / LATTICE as f64;
                 let (_, xu, xv) = self.jet(u, v);
                 let det = xu.perp_dot(xv);
-                if !(det > 1e-12 * self.size * self.size) {
+                if det.is_nan() || det <= 1e-12 * self.size * self.size {
                     return Err(Error::invalid_argument(format!(
                         "the transfinite (Coons) map of the boundary's projection folds near \
                          (u, v) = ({u}, {v}): the projected boundary is too far from convex for \
@@ -303,28 +303,30 @@ impl Boundary {
     fn newton(&self, q: DVec2, start: DVec2) -> Option<DVec2> {
         let tolerance = 1e-13 * self.size;
         let mut uv = start.clamp(DVec2::ZERO, DVec2::ONE);
+        let mut best = (f64::INFINITY, uv);
         for _ in 0..60 {
             let (x, xu, xv) = self.jet(uv.x, uv.y);
             let r = x - q;
             if r.length() <= tolerance {
                 return Some(uv);
             }
-            let previous = uv;
+            if r.length() < best.0 {
+                best = (r.length(), uv);
+            }
             let det = xu.perp_dot(xv);
             if det == 0.0 || !det.is_finite() {
-                return None;
+                break;
             }
             // Solve [xu xv] δ = −r by Cramer's rule.
             let du = -(r.perp_dot(xv)) / det;
             let dv = -(xu.perp_dot(r)) / det;
             uv = (uv + DVec2::new(du, dv)).clamp(DVec2::ZERO, DVec2::ONE);
-            // A point just outside the map's image (the boundary polygon is a chordal
-            // approximation of the curves) stalls on the square's edge: its nearest edge point.
-            if uv == previous && r.length() <= STALL_TOLERANCE * self.size {
-                return Some(uv);
-            }
         }
-        None
+        // A point just outside the map's image (the boundary polygon is a chordal
+        // approximation of the curves) stalls on the square's edge: its nearest edge point.
+        let (r, uv) = best;
+        let on_edge = uv.x == 0.0 || uv.x == 1.0 || uv.y == 0.0 || uv.y == 1.0;
+        (on_edge && r <= STALL_TOLERANCE * self.size).then_some(uv)
     }
 }
 

@@ -76,7 +76,7 @@ impl Plane {
         let mut order = [0usize, 1, 2];
         order.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
         let (middle, largest) = (values[order[1]], values[order[2]]);
-        if !(largest > 0.0) || middle <= LINE_RATIO * largest {
+        if largest.is_nan() || largest <= 0.0 || middle <= LINE_RATIO * largest {
             return Err(no_plane());
         }
         let column = |k: usize| DVec3::new(vectors[0][k], vectors[1][k], vectors[2][k]);
@@ -143,10 +143,10 @@ fn symmetric_eigen(mut a: [[f64; 3]; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
                 row[p] = c * kp - s * kq;
                 row[q] = s * kp + c * kq;
             }
+            let (row_p, row_q) = (a[p], a[q]);
             for k in 0..3 {
-                let (pk, qk) = (a[p][k], a[q][k]);
-                a[p][k] = c * pk - s * qk;
-                a[q][k] = s * pk + c * qk;
+                a[p][k] = c * row_p[k] - s * row_q[k];
+                a[q][k] = s * row_p[k] + c * row_q[k];
             }
             for row in v.iter_mut() {
                 let (kp, kq) = (row[p], row[q]);

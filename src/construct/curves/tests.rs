@@ -326,7 +326,7 @@ fn three_sided_open_corners_crossing_and_inside_curves_give_valid_surfaces() {
     assert_eq!(f.mesh.num_faces(), 75);
     assert_eq!(f.mesh.corners().len(), 3);
     let r = check(&f.mesh);
-    assert_eq!(r.valences.get(&3).copied().unwrap_or(0) >= 1, true);
+    assert!(r.valences.get(&3).copied().unwrap_or(0) >= 1);
     // The triangle's corners are the curves' corners.
     for &c in f.mesh.corners().iter().map(|c| &c.vertex) {
         let p = f.targets[c as usize];

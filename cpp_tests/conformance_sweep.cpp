@@ -230,11 +230,11 @@ int main() {
     std::vector<Model> models;
     // The sweep examples, then the sketch-curve patches of examples/curves (open all-quad
     // meshes with tagged corners, fitted the same way).
-    const std::string sweeps = PROFSUBD_SWEEP_EXAMPLES, curves = PROFSUBD_CURVES_EXAMPLES;
+    const std::string sweep_dir = PROFSUBD_SWEEP_EXAMPLES, curves_dir = PROFSUBD_CURVES_EXAMPLES;
     const std::pair<const std::string *, const char *> examples[] = {
-        {&sweeps, "wine_glass"}, {&sweeps, "torus_knot_tube"}, {&sweeps, "handrail"},
-        {&sweeps, "wine_glass_cutaway"}, {&sweeps, "vase_cutaway"}, {&curves, "bonnet"},
-        {&curves, "three_sided"}, {&curves, "open_corners"}};
+        {&sweep_dir, "wine_glass"}, {&sweep_dir, "torus_knot_tube"}, {&sweep_dir, "handrail"},
+        {&sweep_dir, "wine_glass_cutaway"}, {&sweep_dir, "vase_cutaway"}, {&curves_dir, "bonnet"},
+        {&curves_dir, "three_sided"}, {&curves_dir, "open_corners"}};
     for (const auto &[dir, name] : examples) {
         Model m;
         m.name = name;
@@ -486,6 +486,6 @@ int main() {
         }
     }
     ck.set_context("");
-    ck.equal(models.size(), size_t(23), "every model built");
+    ck.equal(models.size(), size_t(27), "every model built");
     return ck.finish();
 }

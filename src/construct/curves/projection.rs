@@ -3,6 +3,7 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::construct::sweep::frames::any_perpendicular;
 use crate::error::{Error, Result};
 
 /// A plane with an orthonormal in-plane frame: a point `p` projects to
@@ -102,15 +103,7 @@ impl Plane {
             )));
         }
         let n = n.normalize();
-        let a = n.abs();
-        let axis = if a.x <= a.y && a.x <= a.z {
-            DVec3::X
-        } else if a.y <= a.z {
-            DVec3::Y
-        } else {
-            DVec3::Z
-        };
-        let e1 = (axis - n * n.dot(axis)).normalize();
+        let e1 = any_perpendicular(n);
         let origin = points.iter().copied().sum::<DVec3>() / points.len().max(1) as f64;
         Ok(Plane {
             origin,

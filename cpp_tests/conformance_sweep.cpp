@@ -5,7 +5,8 @@
 // (profsubd_evaluator_limit_vertices).
 //
 // Models: the checked-in examples (examples/sweeps/*.obj with *.targets.txt: wine glass,
-// torus knot tube, handrail, capped 270-degree cutaways of a wine glass and a vase) and
+// torus knot tube, handrail, capped 270-degree cutaways of a wine glass and a vase), the
+// sketch-curve patches (examples/curves: bonnet, three_sided, open_corners) and
 // models built here through the C API (sphere, cylinder, cone, partial and capped
 // revolutions, torus, a square tube along a closed curve, an L-shaped square rail), each read
 // back through the C API and then from the OBJ file it writes, so OpenSubdiv is configured from the
@@ -26,12 +27,16 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 using namespace profsubd_test;
 using namespace OpenSubdiv;
 
 #ifndef PROFSUBD_SWEEP_EXAMPLES
 #error "PROFSUBD_SWEEP_EXAMPLES must name examples/sweeps"
+#endif
+#ifndef PROFSUBD_CURVES_EXAMPLES
+#error "PROFSUBD_CURVES_EXAMPLES must name examples/curves"
 #endif
 
 namespace {
@@ -223,11 +228,17 @@ std::vector<double> circle(int n, double r, int dims) {
 int main() {
     Checker ck("conformance_sweep");
     std::vector<Model> models;
-    for (const char *name :
-         {"wine_glass", "torus_knot_tube", "handrail", "wine_glass_cutaway", "vase_cutaway"}) {
+    // The sweep examples, then the sketch-curve patches of examples/curves (open all-quad
+    // meshes with tagged corners, fitted the same way).
+    const std::string sweep_dir = PROFSUBD_SWEEP_EXAMPLES, curves_dir = PROFSUBD_CURVES_EXAMPLES;
+    const std::pair<const std::string *, const char *> examples[] = {
+        {&sweep_dir, "wine_glass"}, {&sweep_dir, "torus_knot_tube"}, {&sweep_dir, "handrail"},
+        {&sweep_dir, "wine_glass_cutaway"}, {&sweep_dir, "vase_cutaway"}, {&curves_dir, "bonnet"},
+        {&curves_dir, "three_sided"}, {&curves_dir, "open_corners"}};
+    for (const auto &[dir, name] : examples) {
         Model m;
         m.name = name;
-        std::string base = std::string(PROFSUBD_SWEEP_EXAMPLES) + "/" + name;
+        std::string base = *dir + "/" + name;
         std::string err;
         ck.set_context(name);
         if (ck.check(read_osd_shape(base + ".obj", &m.shape, &err), "read " + base + ".obj: " + err) &&
@@ -259,6 +270,39 @@ int main() {
         if (take_result(ck, r.name, st, s, &m)) {
             models.push_back(std::move(m));
         }
+    }
+    // A sketch-curve patch through the C API: four boundary strokes on z = x^2 - y^2 and one
+    // interior stroke, best-fit projection (NULL normal), 10 x 10 quads; two boundary curves
+    // are refused with INVALID_ARGUMENT and leave the output untouched.
+    {
+        std::vector<double> pts;
+        std::vector<size_t> sizes;
+        auto stroke = [&](double x0, double y0, double x1, double y1, double lift) {
+            for (int i = 0; i <= 6; ++i) {
+                double x = x0 + (x1 - x0) * i / 6, y = y0 + (y1 - y0) * i / 6;
+                pts.insert(pts.end(), {x, y, x * x - y * y + lift});
+            }
+            sizes.push_back(7);
+        };
+        stroke(-1, -1, 1, -1, 0);
+        stroke(1, -1, 1, 1, 0);
+        stroke(1, 1, -1, 1, 0);
+        stroke(-1, 1, -1, -1, 0);
+        stroke(-0.6, -0.5, 0.5, 0.4, 0.02);
+        profsubd_options_set_samples(raw_options, 10, 10);
+        const double up[3] = {0, 0, 1};
+        profsubd_fitted *s = nullptr;
+        profsubd_status st = profsubd_curves(pts.data(), sizes.data(), 4, 1, 2.0, up, raw_options, &s);
+        Model m;
+        if (take_result(ck, "sketch curves 10x10", st, s, &m)) {
+            models.push_back(std::move(m));
+        }
+        profsubd_fitted *untouched = nullptr;
+        ck.set_context("sketch curves, two boundary curves");
+        ck.check(profsubd_curves(pts.data(), sizes.data(), 2, 0, 2.0, nullptr, raw_options, &untouched) ==
+                         PROFSUBD_ERROR_INVALID_ARGUMENT &&
+                     untouched == nullptr,
+                 "two boundary curves are refused");
     }
     // Partial revolutions: poles on the boundary meridians (sectors with a corner apex), and
     // flat caps (sectors, meridian planes) closing the solid.
@@ -442,6 +486,6 @@ int main() {
         }
     }
     ck.set_context("");
-    ck.equal(models.size(), size_t(23), "every model built");
+    ck.equal(models.size(), size_t(27), "every model built");
     return ck.finish();
 }

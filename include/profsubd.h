@@ -743,6 +743,31 @@ enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options 
                                                         size_t num_trajectory);
 
 /**
+ * Build a patch through unorganized 3-D sketch curves (Qin & Wright): `num_boundary` (3 or
+ * 4) boundary curves in order around the patch, then `num_interior` interior curves;
+ * `curve_sizes` holds the point count of each (`num_boundary + num_interior` entries) and
+ * `points` all their points one curve after the other, 3 doubles `(x, y, z)` each. `tau`
+ * is the attraction exponent (>= 0; the paper's default 2). `projection_normal`: 3 doubles,
+ * the normal of the projection plane, or NULL for the best-fit plane of all points. Settings
+ * (`options` may be NULL): `profsubd_options_set_samples` (quads along the first and the
+ * second boundary curve; default 16, 16), the interpolation, and the boundary interpolation
+ * and crease method the surface is fitted under and tagged with. Errors:
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (fewer than 3 or more than 4
+ * boundary curves, a curve with fewer than 2 points, NaN, tau < 0, no projection plane, a
+ * boundary whose projection folds; the message says which), `PROFSUBD_ERROR_NULL_ARGUMENT`
+ * for a NULL array with a non-zero count, `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
+ * tolerance.
+ */
+enum profsubd_status profsubd_curves(const double *points,
+                                     const size_t *curve_sizes,
+                                     size_t num_boundary,
+                                     size_t num_interior,
+                                     double tau,
+                                     const double *projection_normal,
+                                     const struct profsubd_options *options,
+                                     struct profsubd_fitted **out);
+
+/**
  * Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
  * The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
  * little more around extraordinary vertices and semi-sharp features.

@@ -122,6 +122,7 @@ pub mod tessellate;
 pub(crate) mod test_support;
 pub mod topology;
 
+pub use construct::curves::CurvesInput;
 pub use construct::profile::ProfileInput;
 pub use construct::revolve::RevolveInput;
 pub use construct::sweep::SweepInput;

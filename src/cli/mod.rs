@@ -13,6 +13,7 @@ pub mod check;
 pub mod check_surface;
 pub mod construct;
 pub mod convert;
+pub mod curves;
 pub mod limit;
 pub mod profile;
 pub mod refine;
@@ -124,6 +125,14 @@ pub enum Command {
     /// across it (mitered), and fits the control points so that the exact limit surface
     /// passes through every data point.
     Sweep(sweep::SweepArgs),
+    /// Build a patch through unorganized 3-D sketch curves (Qin & Wright).
+    ///
+    /// Reads 3 or 4 boundary curves (in order around the patch; corners may stay open) and
+    /// any interior curves from JSON (tau, samples, projection), projects them on a plane,
+    /// maps the boundary to the unit square (Coons map) and the interior curves with it,
+    /// blends the curve points on a grid by the paper's attraction weights (1/d)^tau, and
+    /// fits the control points so that the exact limit surface passes through every point.
+    Curves(curves::CurvesArgs),
     /// Tessellate the limit surface: triangles or quads on it, watertight, as STL, OFF, PLY
     /// or OBJ (format from the extension or --format).
     ///
@@ -243,6 +252,7 @@ pub fn dispatch(command: &Command) -> Result<i32> {
         Command::Profile(args) => profile::run(args),
         Command::Revolve(args) => revolve::run(args),
         Command::Sweep(args) => sweep::run(args),
+        Command::Curves(args) => curves::run(args),
         Command::Tessellate(args) => tessellate::run(args),
     }
 }

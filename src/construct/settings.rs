@@ -180,15 +180,22 @@ pub(crate) fn check_degrees(name: &str, degrees: f64, max: f64) -> Result<()> {
 }
 
 /// Parse a construction's JSON input `text` (from `path`, which only names it in messages):
-/// the keys of [`Settings`] give the settings, the others the construction's input `T`.
+/// the keys of [`Settings`] give the settings, the others (and a settings key whose value is
+/// an array) the construction's input `T`.
 ///
 /// Errors: [`Error::Parse`] for a syntax error (with its line), a document that is not an
 /// object, an unknown key or a bad value (line 0: the document was already read).
 pub fn parse_json<T: DeserializeOwned>(text: &str, path: &Path) -> Result<(T, Settings)> {
     let mut input: serde_json::Map<String, serde_json::Value> =
         crate::io::json::parse_json(text, path)?;
+    // No setting is an array: an array under a settings key is the construction's own (the
+    // sketch-curves construction's `boundary` curves).
+    let keys: Vec<&str> = KEYS
+        .into_iter()
+        .filter(|k| !input.get(*k).is_some_and(|v| v.is_array()))
+        .collect();
     let settings: serde_json::Map<String, serde_json::Value> =
-        KEYS.iter().filter_map(|k| input.remove_entry(*k)).collect();
+        keys.iter().filter_map(|k| input.remove_entry(*k)).collect();
     let value = |e: serde_json::Error| Error::Parse {
         path: path.to_path_buf(),
         line: 0,

@@ -5,6 +5,7 @@
 //! `profsubd_options_set_boundary` and `profsubd_options_set_crease_method` (what the
 //! surface is fitted under and tagged with) apply to the constructions too.
 
+use crate::construct::curves::CurvesInput;
 use crate::construct::profile::ProfileInput;
 use crate::construct::revolve::RevolveInput;
 use crate::construct::settings::Caps;
@@ -75,6 +76,14 @@ impl TakeOptions for RevolveInput {
         }
         self.angle_deg = c.angle_deg.unwrap_or(self.angle_deg);
         self.corners = c.corners[0].clone();
+    }
+}
+
+impl TakeOptions for CurvesInput {
+    fn take(&mut self, o: &OptionsData) {
+        if let Some([nu, nv]) = o.construct.samples {
+            self.samples = [nu as usize, nv as usize];
+        }
     }
 }
 

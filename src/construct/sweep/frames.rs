@@ -206,7 +206,7 @@ fn frame_from(p: &FramePoint, tangent: DVec3, normal: DVec3) -> Frame {
 }
 
 /// A unit vector perpendicular to `t`, from the world axis least aligned with it.
-fn any_perpendicular(t: DVec3) -> DVec3 {
+pub(crate) fn any_perpendicular(t: DVec3) -> DVec3 {
     let a = t.abs();
     let axis = if a.x <= a.y && a.x <= a.z {
         DVec3::X

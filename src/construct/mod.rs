@@ -5,7 +5,8 @@
 //! checks written once) and the shared result [`Fitted`]. One room per construction:
 //! - [`profile`]: the Hui–Lai construction from four planar silhouettes;
 //! - [`revolve`]: surfaces of revolution, full or partial turns with their caps;
-//! - [`sweep`]: a planar profile swept along a 3-D trajectory.
+//! - [`sweep`]: a planar profile swept along a 3-D trajectory;
+//! - [`blend`]: N pipes joined by a generalized B-spline (GBS) blend (its control mesh).
 //!
 //! Shared pieces beside them:
 //! - [`settings`]: [`Settings`], the sample limits, the JSON inputs' common keys;
@@ -20,6 +21,7 @@
 //! - `pole_cap`: the quad patches that close a ring (smooth poles, flat caps) and the
 //!   pointed-tip fan.
 
+pub mod blend;
 pub mod design;
 pub(crate) mod equidistribute;
 pub mod fitted;

@@ -150,3 +150,11 @@ pub fn order4_limit_weight(v: f64) -> f64 {
     }
     2.0 * a / b
 }
+
+/// The limit radius of a closed regular polygon of control radius 1 and angular spacing `θ`
+/// at order `k` with the matching tension cos(θ/2):
+/// `λ_k(θ) = (sin θ/θ)·(2 sin(θ/2)/θ)^{k−4}` (so a circle of radius r needs control radius
+/// r/λ).
+pub fn circle_factor(k: u32, theta: f64) -> f64 {
+    (sin(theta) / theta) * (2.0 * sin(theta / 2.0) / theta).powi(k as i32 - 4)
+}

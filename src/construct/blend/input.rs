@@ -33,13 +33,16 @@ pub struct BlendInput {
     pub alpha: f64,
     /// Push of the valley points towards the junction, along the pipes' end tangents.
     pub k_alpha: f64,
+    /// Level of the GBS refinement whose vertices the Catmull–Clark result interpolates
+    /// (1..=4).
+    pub gbs_level: u32,
 }
 
 /// Number of columns round every pipe: the blend joins four-column ends.
 pub const COLUMNS: usize = 4;
 
 impl BlendInput {
-    /// `pipes` with order 4, the exact-circle tension, α = 0.5 and k_α = 0.5.
+    /// `pipes` with order 4, the exact-circle tension, α = 0.5, k_α = 0.5 and GBS level 1.
     pub fn new(pipes: Vec<Pipe>) -> BlendInput {
         BlendInput {
             pipes,
@@ -47,6 +50,7 @@ impl BlendInput {
             tension: None,
             alpha: 0.5,
             k_alpha: 0.5,
+            gbs_level: 1,
         }
     }
 

@@ -268,3 +268,39 @@ fn bad_inputs_are_refused() {
     .contains("intersect before the junction"));
     assert!(with(&|i| i.pipes[3].axis = DVec3::new(0.2, -1.0, 5.0)).contains("hub normal"));
 }
+
+#[test]
+fn catmull_clark_result_interpolates_the_gbs_limit() {
+    use crate::construct::design::LATTICE;
+    use crate::construct::Settings;
+    for (pipes, order) in [(tee(), 4), (star(3, 2.5), 4), (star(6, 2.5), 6)] {
+        let input = BlendInput {
+            order,
+            ..BlendInput::new(pipes)
+        };
+        let fitted = super::build(&input, &Settings::default()).unwrap();
+        assert!(fitted.fit.residual <= fitted.fit.tolerance);
+        // The lattice's corners are the targets of the faces' corners.
+        let n = LATTICE + 1;
+        for f in 0..fitted.mesh.num_faces() {
+            let fv = fitted.mesh.face(f);
+            let corners = [0, LATTICE, n * n - 1, n * LATTICE];
+            for (k, &at) in corners.iter().enumerate() {
+                let d = fitted.design.points[f * n * n + at];
+                assert_eq!(d, fitted.targets[fv[k] as usize], "face {f} corner {k}");
+            }
+        }
+        let report = fitted.surface_report().unwrap();
+        eprintln!("k={order}: {report:?}");
+        assert!(report.max_design_distance < 1e-2, "{report:?}");
+        assert_eq!(report.folded_faces, 0);
+    }
+    let odd = BlendInput {
+        order: 3,
+        ..BlendInput::new(tee())
+    };
+    assert!(matches!(
+        super::build(&odd, &Settings::default()),
+        Err(Error::InvalidArgument(_))
+    ));
+}

@@ -2,6 +2,7 @@
 //! with the checks that reject inputs the blend cannot join.
 
 use glam::DVec3;
+use serde::Deserialize;
 
 use crate::error::{Error, Result};
 use crate::gbs::GbsOptions;
@@ -19,8 +20,12 @@ pub struct Pipe {
     pub length: f64,
 }
 
-/// Input of the N-way blend.
-#[derive(Debug, Clone, PartialEq)]
+/// Input of the N-way blend. JSON: `{"pipes": [{"end": [x,y,z], "axis": [x,y,z],
+/// "radius": r, "length": l}, ...], "order": 4, "tension": null, "alpha": 0.5,
+/// "k_alpha": 0.5, "gbs_level": 1}` (all keys but `pipes` optional, defaults as
+/// [`BlendInput::new`]), plus the settings keys.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(from = "BlendJson")]
 pub struct BlendInput {
     /// The pipes, 3 to 8, in any order (the blend sorts them round the junction).
     pub pipes: Vec<Pipe>,
@@ -36,6 +41,52 @@ pub struct BlendInput {
     /// Level of the GBS refinement whose vertices the Catmull–Clark result interpolates
     /// (1..=4).
     pub gbs_level: u32,
+}
+
+/// [`Pipe`] as JSON.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PipeJson {
+    end: [f64; 3],
+    axis: [f64; 3],
+    radius: f64,
+    length: f64,
+}
+
+/// [`BlendInput`] as JSON.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BlendJson {
+    pipes: Vec<PipeJson>,
+    order: Option<u32>,
+    tension: Option<f64>,
+    alpha: Option<f64>,
+    k_alpha: Option<f64>,
+    gbs_level: Option<u32>,
+}
+
+impl From<BlendJson> for BlendInput {
+    fn from(j: BlendJson) -> BlendInput {
+        let pipes = j
+            .pipes
+            .into_iter()
+            .map(|p| Pipe {
+                end: DVec3::from(p.end),
+                axis: DVec3::from(p.axis),
+                radius: p.radius,
+                length: p.length,
+            })
+            .collect();
+        let d = BlendInput::new(pipes);
+        BlendInput {
+            order: j.order.unwrap_or(d.order),
+            tension: j.tension,
+            alpha: j.alpha.unwrap_or(d.alpha),
+            k_alpha: j.k_alpha.unwrap_or(d.k_alpha),
+            gbs_level: j.gbs_level.unwrap_or(d.gbs_level),
+            ..d
+        }
+    }
 }
 
 /// Number of columns round every pipe: the blend joins four-column ends.

@@ -21,7 +21,7 @@
 //                                 Bfr's folded set == profsubd's, at 9 x 9 (depth 4) and
 //                                 17 x 17 (depth 2);
 //   conformance_folds FILE.obj... the same comparison on the files given;
-//   conformance_folds --examples  every OBJ of examples/profiles and examples/sweeps has no
+//   conformance_folds --examples  every OBJ of examples/profiles, sweeps and blends has no
 //                                 folded face, by Bfr and by profsubd, at both samplings
 //                                 (ctest examples_fold_free).
 #include "capi_mesh.h"
@@ -370,12 +370,12 @@ int main(int argc, char **argv) {
     if (argc > 1 && std::strcmp(argv[1], "--examples") == 0) {
         Checker ck("examples_fold_free");
         int files = 0;
-        for (const char *dir : {"/examples/profiles", "/examples/sweeps"})
+        for (const char *dir : {"/examples/profiles", "/examples/sweeps", "/examples/blends"})
             for (const std::string &path : list_obj_files(root + dir)) {
                 compare(ck, path, true);
                 ++files;
             }
-        ck.check(files >= 9, "examples/profiles and examples/sweeps hold the example OBJ files");
+        ck.check(files >= 13, "examples/profiles, sweeps and blends hold the example OBJ files");
         return ck.finish();
     }
 

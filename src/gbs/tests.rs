@@ -11,7 +11,7 @@ use super::rules::{
 };
 use super::{refine_gbs, GbsOptions};
 use crate::mesh::{Mesh, MeshParts};
-use crate::options::{BoundaryInterpolation, SubdivOptions};
+use crate::options::SubdivOptions;
 use crate::Error;
 
 /// The limit radius of a circle of control radius 1 and angular spacing θ at order k:
@@ -363,25 +363,12 @@ fn bad_options_and_meshes_are_refused() {
     .unwrap_err();
     assert!(matches!(err, Error::InvalidMesh(_)), "{err}");
     assert!(err.to_string().contains("infinitely sharp"), "{err}");
-    let _ = BoundaryInterpolation::EdgeOnly;
 }
 
 #[test]
 fn odd_orders_keep_closed_meshes_oriented_manifolds() {
     // The square pyramid (four triangles and a quad) and the cube.
-    let pyramid = Mesh::from_parts(MeshParts {
-        positions: vec![
-            DVec3::new(0.0, 0.0, 0.0),
-            DVec3::new(1.0, 0.0, 0.0),
-            DVec3::new(1.0, 1.0, 0.0),
-            DVec3::new(0.0, 1.0, 0.0),
-            DVec3::new(0.5, 0.5, 1.0),
-        ],
-        face_sizes: vec![4, 3, 3, 3, 3],
-        face_indices: vec![0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4],
-        ..Default::default()
-    })
-    .unwrap();
+    let pyramid = Mesh::from_parts(crate::test_support::square_pyramid()).unwrap();
     for mesh in [pyramid, crate::test_support::unit_cube(vec![])] {
         for k in [3, 5, 7] {
             let opts = GbsOptions {

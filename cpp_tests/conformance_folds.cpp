@@ -21,7 +21,7 @@
 //                                 Bfr's folded set == profsubd's, at 9 x 9 (depth 4) and
 //                                 17 x 17 (depth 2);
 //   conformance_folds FILE.obj... the same comparison on the files given;
-//   conformance_folds --examples  every OBJ of examples/profiles, sweeps and curves has no
+//   conformance_folds --examples  every OBJ of examples/profiles, sweeps, curves and blends has no
 //                                 folded face, by Bfr and by profsubd, at both samplings
 //                                 (ctest examples_fold_free).
 //   conformance_folds --fold-free FILE.obj...  every file given has no folded face, by Bfr
@@ -372,12 +372,13 @@ int main(int argc, char **argv) {
     if (argc > 1 && std::strcmp(argv[1], "--examples") == 0) {
         Checker ck("examples_fold_free");
         int files = 0;
-        for (const char *dir : {"/examples/profiles", "/examples/sweeps", "/examples/curves"})
+        for (const char *dir : {"/examples/profiles", "/examples/sweeps", "/examples/curves",
+                                 "/examples/blends"})
             for (const std::string &path : list_obj_files(root + dir)) {
                 compare(ck, path, true);
                 ++files;
             }
-        ck.check(files >= 12, "examples/profiles, sweeps and curves hold the example OBJ files");
+        ck.check(files >= 16, "examples/profiles, sweeps, curves and blends hold the example OBJ files");
         return ck.finish();
     }
 

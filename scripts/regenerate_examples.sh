@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Rewrites every bundled example's OBJ and data points (examples/profiles/, examples/sweeps/,
-# examples/curves/)
+# examples/curves/, examples/blends/)
 # with the release CLI, as tests/profile_examples.rs and tests/sweep_examples.rs expect and
 # tests/example_bytes.rs checks byte for byte. Usage: scripts/regenerate_examples.sh [PROFSUBD]
 # (PROFSUBD: the binary to run, default target/release/profsubd, built if missing).
@@ -20,4 +20,8 @@ done
 for json in examples/curves/*.json; do
     base="${json%.json}"
     "$BIN" curves "$json" -o "$base.obj" --targets "$base.targets.txt"
+done
+for json in examples/blends/*.json; do
+    base="${json%.json}"
+    "$BIN" blend "$json" -o "$base.obj" --targets "$base.targets.txt"
 done

@@ -112,6 +112,7 @@ pub mod eval;
 #[doc(hidden)]
 pub mod ffi;
 pub(crate) mod fit;
+pub mod gbs;
 pub mod io;
 pub(crate) mod math;
 pub mod mesh;

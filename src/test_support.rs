@@ -22,6 +22,19 @@ pub(crate) fn quad() -> MeshParts {
     }
 }
 
+/// The square pyramid: unit square base (a quad facing down), apex (0.5, 0.5, 1), four
+/// triangles.
+pub(crate) fn square_pyramid() -> MeshParts {
+    let mut positions = quad().positions;
+    positions.push(DVec3::new(0.5, 0.5, 1.0));
+    MeshParts {
+        positions,
+        face_sizes: vec![4, 3, 3, 3, 3],
+        face_indices: vec![0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4],
+        ..Default::default()
+    }
+}
+
 /// The unit square as a one-quad mesh.
 pub(crate) fn quad_mesh() -> Mesh {
     Mesh::from_parts(quad()).unwrap()

@@ -1,5 +1,5 @@
 //! Determinism: the CLI writes every bundled example (`examples/profiles/`, `examples/sweeps/`,
-//! `examples/curves/`)
+//! `examples/curves/`, `examples/blends/`)
 //! byte for byte as committed, OBJ and data points, so outputs can be diffed and cached
 //! across machines. The fit is scalar code in a fixed order (`profsubd::fit`); a different
 //! CPU or SIMD level must not change a digit (`scripts/check_determinism.sh` runs the same
@@ -14,7 +14,7 @@ fn examples_are_written_byte_for_byte_as_committed() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
     let out = tempfile::tempdir().unwrap();
     let mut checked = 0;
-    for dir in ["profiles", "sweeps", "curves"] {
+    for dir in ["profiles", "sweeps", "curves", "blends"] {
         let mut inputs: Vec<_> = std::fs::read_dir(root.join(dir))
             .unwrap()
             .map(|e| e.unwrap().path())
@@ -26,6 +26,7 @@ fn examples_are_written_byte_for_byte_as_committed() {
             let command = match dir {
                 "profiles" => "profile",
                 "curves" => "curves",
+                "blends" => "blend",
                 _ if text.contains("\"trajectory\"") => "sweep",
                 _ => "revolve",
             };
@@ -69,6 +70,6 @@ fn examples_are_written_byte_for_byte_as_committed() {
             }
         }
     }
-    // 4 profiles, 5 sweeps and 3 sketch-curve patches, two files each.
-    assert_eq!(checked, 24);
+    // 4 profiles, 5 sweeps, 3 sketch-curve patches and 4 blends, two files each.
+    assert_eq!(checked, 32);
 }

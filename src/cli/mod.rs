@@ -9,6 +9,7 @@
 //! reason on stderr; subcommands may define more (`check`: 2 for a non-manifold mesh, 3 with
 //! `--surface` for a limit surface that folds).
 
+pub mod blend;
 pub mod check;
 pub mod check_surface;
 pub mod construct;
@@ -133,6 +134,14 @@ pub enum Command {
     /// blends the curve points on a grid by the paper's attraction weights (1/d)^tau, and
     /// fits the control points so that the exact limit surface passes through every point.
     Curves(curves::CurvesArgs),
+    /// Blend 3 to 8 pipes at a junction with generalized B-spline (GBS) subdivision, as a
+    /// fitted Catmull-Clark mesh.
+    ///
+    /// Reads the pipes (end centre, axis away from the junction, radius, length), the GBS
+    /// order (even), tension, shape parameters alpha (centre) and k_alpha (valleys) from
+    /// JSON; each pipe is an exact cylinder in the GBS limit, and the Catmull-Clark limit
+    /// passes through the GBS limit at the vertices of GBS level --gbs-level.
+    Blend(blend::BlendArgs),
     /// Tessellate the limit surface: triangles or quads on it, watertight, as STL, OFF, PLY
     /// or OBJ (format from the extension or --format).
     ///
@@ -251,6 +260,7 @@ pub fn dispatch(command: &Command) -> Result<i32> {
         Command::Limit(args) => limit::run(args),
         Command::Profile(args) => profile::run(args),
         Command::Revolve(args) => revolve::run(args),
+        Command::Blend(args) => blend::run(args),
         Command::Sweep(args) => sweep::run(args),
         Command::Curves(args) => curves::run(args),
         Command::Tessellate(args) => tessellate::run(args),

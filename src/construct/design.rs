@@ -88,6 +88,15 @@ pub struct DesignLattice {
 }
 
 impl DesignLattice {
+    /// A lattice of given design points (face by face, `u` fastest), for constructions
+    /// whose design surface is sampled directly (the GBS blend).
+    pub(crate) fn from_points(points: Vec<DVec3>) -> DesignLattice {
+        DesignLattice {
+            points,
+            report: OnceLock::new(),
+        }
+    }
+
     /// The [`surface_report`] of `mesh` (the fitted mesh of these faces), computed on the
     /// first call and kept. Errors: those of [`surface_report`].
     pub fn report(&self, mesh: &Mesh) -> Result<&SurfaceReport> {

@@ -6,7 +6,8 @@
 //! - [`profile`]: the Hui–Lai construction from four planar silhouettes;
 //! - [`revolve`]: surfaces of revolution, full or partial turns with their caps;
 //! - [`sweep`]: a planar profile swept along a 3-D trajectory;
-//! - [`curves`]: a patch through unorganized 3-D sketch curves (Qin & Wright).
+//! - [`curves`]: a patch through unorganized 3-D sketch curves (Qin & Wright);
+//! - [`blend`]: N pipes joined by a generalized B-spline (GBS) blend (its control mesh).
 //!
 //! Shared pieces beside them:
 //! - [`settings`]: [`Settings`], the sample limits, the JSON inputs' common keys;
@@ -21,6 +22,7 @@
 //! - `pole_cap`: the quad patches that close a ring (smooth poles, flat caps) and the
 //!   pointed-tip fan.
 
+pub mod blend;
 pub mod curves;
 pub mod design;
 pub(crate) mod equidistribute;

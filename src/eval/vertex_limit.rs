@@ -586,19 +586,9 @@ mod tests {
     #[test]
     fn non_quads_and_isolated_vertices() {
         // A pyramid: square base, four triangles; apex valence 4 over triangles.
-        let parts = MeshParts {
-            positions: vec![
-                DVec3::new(0.0, 0.0, 0.0),
-                DVec3::new(1.0, 0.0, 0.0),
-                DVec3::new(1.0, 1.0, 0.0),
-                DVec3::new(0.0, 1.0, 0.0),
-                DVec3::new(0.5, 0.5, 1.0),
-                DVec3::new(9.0, 9.0, 9.0),
-            ],
-            face_sizes: vec![4, 3, 3, 3, 3],
-            face_indices: vec![0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4],
-            ..MeshParts::default()
-        };
+        // Plus an isolated vertex.
+        let mut parts = crate::test_support::square_pyramid();
+        parts.positions.push(DVec3::new(9.0, 9.0, 9.0));
         let mesh = Mesh::from_parts(parts).unwrap();
         let s = limit_vertex_samples(&mesh, &SubdivOptions::default()).unwrap();
         // symmetric: apex limit on the axis, normal up

@@ -50,6 +50,7 @@
 #![allow(non_camel_case_types)]
 #![allow(clippy::missing_safety_doc)]
 
+pub mod blend;
 pub mod construct;
 pub mod curves;
 pub mod error;

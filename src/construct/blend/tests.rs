@@ -1,0 +1,306 @@
+// Reference data (pipe directions round a circle) may use the platform's sin and cos.
+#![allow(clippy::disallowed_methods)]
+
+use std::f64::consts::{FRAC_PI_2, TAU};
+
+use glam::DVec3;
+
+use super::{control_mesh, BlendInput, BlendMesh, Pipe};
+use crate::gbs::rules::circle_factor;
+use crate::gbs::{limit::limit_points, refine_gbs, GbsOptions};
+use crate::mesh::{Mesh, MeshParts};
+use crate::topology::Level;
+use crate::Error;
+
+/// N pipes of radius 1 in the xy-plane, evenly spread, ends `dist` from the origin.
+fn star(n: usize, dist: f64) -> Vec<Pipe> {
+    (0..n)
+        .map(|i| {
+            let a = TAU * i as f64 / n as f64 + 0.1;
+            let d = DVec3::new(a.cos(), a.sin(), 0.0);
+            Pipe {
+                end: d * dist,
+                axis: d,
+                radius: 1.0,
+                length: 4.0,
+            }
+        })
+        .collect()
+}
+
+/// A T-junction: a pipe of radius 1 along x through the junction and one of radius 0.6
+/// along y.
+fn tee() -> Vec<Pipe> {
+    let pipe = |axis: DVec3, radius| Pipe {
+        end: axis * 2.0,
+        axis,
+        radius,
+        length: 4.0,
+    };
+    vec![
+        pipe(DVec3::X, 1.0),
+        pipe(-DVec3::X, 1.0),
+        pipe(DVec3::Y, 0.6),
+    ]
+}
+
+fn cases() -> Vec<(String, Vec<Pipe>)> {
+    let mut v: Vec<(String, Vec<Pipe>)> = (3..=8)
+        .map(|n| {
+            (
+                format!("{n}-way"),
+                star(n, 1.2 / (std::f64::consts::PI / n as f64).sin()),
+            )
+        })
+        .collect();
+    v.push(("tee".into(), tee()));
+    v
+}
+
+#[test]
+fn blends_are_oriented_manifolds_of_low_valence() {
+    for (name, pipes) in cases() {
+        for order in [3, 4, 5, 6] {
+            let input = BlendInput {
+                order,
+                ..BlendInput::new(pipes.clone())
+            };
+            let b = control_mesh(&input).unwrap_or_else(|e| panic!("{name}: {e}"));
+            let level = Level::from_mesh(&b.mesh);
+            let n = pipes.len();
+            let mut boundary = 0;
+            for e in 0..level.num_edges() {
+                // Consistent orientation: an edge used twice the same way is non-manifold.
+                assert!(!level.is_edge_non_manifold(e), "{name} k={order} edge {e}");
+                boundary += level.is_edge_boundary(e) as usize;
+            }
+            // The only boundaries are the pipes' free ends.
+            assert_eq!(boundary, 4 * n, "{name}");
+            assert!((0..level.num_vertices()).all(|v| !level.is_vertex_non_manifold(v)));
+            let valences: Vec<usize> = (b.first_hub_vertex..level.num_vertices())
+                .map(|v| level.valence(v))
+                .collect();
+            assert!(valences[..2 * n].iter().all(|&x| x == 4), "{name}: centres");
+            assert!(valences[2 * n..].iter().all(|&x| x == 3), "{name}: valleys");
+            let max = (0..level.num_vertices()).map(|v| level.valence(v)).max();
+            assert_eq!(max, Some(5), "{name}");
+            // Both faces of the hub's top are N-gons; the refined mesh stays manifold.
+            let refined = refine_gbs(&b.mesh, &input.gbs_options(), 2).unwrap();
+            let l2 = &refined.level;
+            assert!((0..l2.num_edges()).all(|e| !l2.is_edge_non_manifold(e)));
+        }
+    }
+}
+
+/// The mesh with the positions replaced by (is a hub vertex, pipe number, 0).
+fn indicator(b: &BlendMesh) -> Mesh {
+    let mut parts: MeshParts = b.mesh.parts().clone();
+    parts.positions = (0..parts.positions.len())
+        .map(|v| {
+            let pipe = b
+                .pipes
+                .iter()
+                .rposition(|p| p.first_vertex <= v)
+                .unwrap_or(0);
+            DVec3::new((v >= b.first_hub_vertex) as u8 as f64, pipe as f64, 0.0)
+        })
+        .collect();
+    Mesh::from_parts(parts).unwrap()
+}
+
+#[test]
+fn pipes_stay_exact_away_from_the_hub() {
+    for (name, pipes) in cases() {
+        for order in 3..=8 {
+            let input = BlendInput {
+                order,
+                ..BlendInput::new(pipes.clone())
+            };
+            let b = control_mesh(&input).unwrap();
+            let diag = b.mesh.bounding_box_diagonal();
+            // Unit tension: the same supports, all weights ≥ 0, so a refined vertex owes
+            // nothing to the hub exactly when its hub share is 0.
+            let unit = GbsOptions {
+                order,
+                tension: 1.0,
+            };
+            let levels = if order <= 5 { 3 } else { 2 };
+            let marks = refine_gbs(&indicator(&b), &unit, levels).unwrap();
+            let refined = refine_gbs(&b.mesh, &input.gbs_options(), levels).unwrap();
+            let theta = FRAC_PI_2 / 2f64.powi(levels as i32);
+            let mut checked = 0;
+            for (p, m) in refined.positions.iter().zip(&marks.positions) {
+                if m.x != 0.0 {
+                    continue;
+                }
+                let pipe = &b.pipes[m.y.round() as usize];
+                let rho = pipe.pipe.radius / circle_factor(order, theta);
+                let off = *p - pipe.pipe.end;
+                let radial = (off - pipe.axis * off.dot(pipe.axis)).length();
+                assert!(
+                    (radial - rho).abs() < 1e-12 * diag,
+                    "{name} k={order}: {:e}",
+                    radial - rho
+                );
+                checked += 1;
+            }
+            assert!(
+                checked > refined.positions.len() / 3,
+                "{name} k={order}: {checked}"
+            );
+        }
+    }
+    // Order 4: the exact limit points off the hub are on the cylinders of the given radii.
+    let b = control_mesh(&BlendInput::new(tee())).unwrap();
+    let lp = limit_points(&b.mesh, &BlendInput::new(tee()).gbs_options(), 2).unwrap();
+    let marks = refine_gbs(
+        &indicator(&b),
+        &GbsOptions {
+            order: 4,
+            tension: 1.0,
+        },
+        2,
+    )
+    .unwrap();
+    let mut on = 0;
+    for ((p, m), exact) in lp.points.iter().zip(&marks.positions).zip(&lp.exact) {
+        // The limit stencil reaches one ring further than the control point.
+        if m.x == 0.0 && *exact {
+            let pipe = &b.pipes[m.y.round() as usize];
+            let off = *p - pipe.pipe.end;
+            let radial = (off - pipe.axis * off.dot(pipe.axis)).length();
+            on += ((radial - pipe.pipe.radius).abs() < 1e-12) as usize;
+        }
+    }
+    assert!(on > 100, "{on}");
+}
+
+#[test]
+fn centre_and_valleys_move_monotonically() {
+    let pipes = star(5, 2.5);
+    let steps = [0.0, 0.25, 0.5, 1.0, 2.0];
+    let heights = |order: u32| -> Vec<(f64, f64)> {
+        steps
+            .iter()
+            .map(|&alpha| {
+                let input = BlendInput {
+                    order,
+                    alpha,
+                    ..BlendInput::new(pipes.clone())
+                };
+                let b = control_mesh(&input).unwrap();
+                let c = b.centre_vertices().start;
+                let refined = refine_gbs(&b.mesh, &input.gbs_options(), 3).unwrap();
+                // Even orders keep vertex v's descendant at index v (vertices first).
+                (
+                    b.mesh.positions()[c].dot(b.up),
+                    refined.positions[c].dot(b.up),
+                )
+            })
+            .collect()
+    };
+    let valleys = |order: u32| -> Vec<(f64, f64)> {
+        steps
+            .iter()
+            .map(|&k_alpha| {
+                let input = BlendInput {
+                    order,
+                    k_alpha,
+                    ..BlendInput::new(pipes.clone())
+                };
+                let b = control_mesh(&input).unwrap();
+                let w = b.valley_vertices().start;
+                let refined = refine_gbs(&b.mesh, &input.gbs_options(), 3).unwrap();
+                let out = b.pipes[0].axis + b.pipes[1].axis;
+                (
+                    b.mesh.positions()[w].dot(out),
+                    refined.positions[w].dot(out),
+                )
+            })
+            .collect()
+    };
+    for order in [4, 6] {
+        let h = heights(order);
+        let w = valleys(order);
+        for i in 1..steps.len() {
+            assert!(
+                h[i].0 > h[i - 1].0 && h[i].1 > h[i - 1].1,
+                "k={order} α: {h:?}"
+            );
+            assert!(
+                w[i].0 < w[i - 1].0 && w[i].1 < w[i - 1].1,
+                "k={order} k_α: {w:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn bad_inputs_are_refused() {
+    let ok = star(4, 2.0);
+    let with = |f: &dyn Fn(&mut BlendInput)| {
+        let mut input = BlendInput::new(ok.clone());
+        f(&mut input);
+        match control_mesh(&input) {
+            Err(Error::InvalidArgument(m)) => m,
+            Err(other) => panic!("expected an invalid argument, got {other}"),
+            Ok(_) => panic!("expected an invalid argument, got a mesh"),
+        }
+    };
+    assert!(with(&|i| i.pipes.truncate(2)).contains("3 to 8 pipes"));
+    assert!(with(&|i| i.pipes.clear()).contains("3 to 8 pipes"));
+    assert!(with(&|i| i.pipes.extend(star(5, 9.0))).contains("3 to 8 pipes"));
+    assert!(with(&|i| i.pipes[1].radius = 0.0).contains("radius"));
+    assert!(with(&|i| i.pipes[1].radius = -1.0).contains("radius"));
+    assert!(with(&|i| i.pipes[2].length = f64::NAN).contains("length"));
+    assert!(with(&|i| i.order = 2).contains("order"));
+    assert!(with(&|i| i.order = 9).contains("order"));
+    assert!(with(&|i| i.tension = Some(-1.0)).contains("tension"));
+    assert!(with(&|i| i.pipes[1].axis = i.pipes[0].axis).contains("parallel"));
+    assert!(with(&|i| i.pipes[1].end = i.pipes[0].end).contains("coincident"));
+    assert!(with(&|i| i.pipes[0].axis = -i.pipes[0].axis).contains("into the junction"));
+    // Two neighbours 20° apart with ends close together cross each other.
+    assert!(with(&|i| {
+        let a = 0.35f64;
+        i.pipes[1].axis = DVec3::new(a.cos(), a.sin(), 0.0);
+        i.pipes[1].end = i.pipes[1].axis * 2.0;
+    })
+    .contains("intersect before the junction"));
+    assert!(with(&|i| i.pipes[3].axis = DVec3::new(0.2, -1.0, 5.0)).contains("hub normal"));
+}
+
+#[test]
+fn catmull_clark_result_interpolates_the_gbs_limit() {
+    use crate::construct::design::LATTICE;
+    use crate::construct::Settings;
+    for (pipes, order) in [(tee(), 4), (star(3, 2.5), 4), (star(6, 2.5), 6)] {
+        let input = BlendInput {
+            order,
+            ..BlendInput::new(pipes)
+        };
+        let fitted = super::build(&input, &Settings::default()).unwrap();
+        assert!(fitted.fit.residual <= fitted.fit.tolerance);
+        // The lattice's corners are the targets of the faces' corners.
+        let n = LATTICE + 1;
+        for f in 0..fitted.mesh.num_faces() {
+            let fv = fitted.mesh.face(f);
+            let corners = [0, LATTICE, n * n - 1, n * LATTICE];
+            for (k, &at) in corners.iter().enumerate() {
+                let d = fitted.design.points[f * n * n + at];
+                assert_eq!(d, fitted.targets[fv[k] as usize], "face {f} corner {k}");
+            }
+        }
+        let report = fitted.surface_report().unwrap();
+        eprintln!("k={order}: {report:?}");
+        assert!(report.max_design_distance < 1e-2, "{report:?}");
+        assert_eq!(report.folded_faces, 0);
+    }
+    let odd = BlendInput {
+        order: 3,
+        ..BlendInput::new(tee())
+    };
+    assert!(matches!(
+        super::build(&odd, &Settings::default()),
+        Err(Error::InvalidArgument(_))
+    ));
+}

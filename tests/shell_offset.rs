@@ -141,13 +141,26 @@ fn offset_is_continuous_across_every_edge_of_closed_shapes() {
     let Some(dir) = osd_shapes::shapes_dir() else {
         return;
     };
-    for name in ["catmark_cube", "catmark_torus", "catmark_pyramid"] {
-        let mesh = read_obj_file(&dir.join(format!("{name}.obj")))
-            .unwrap()
-            .mesh;
+    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
+    let shapes = [
+        dir.join("catmark_cube.obj"),
+        dir.join("catmark_torus.obj"),
+        dir.join("catmark_pyramid.obj"),
+        // Crease rings (shoulder, flat base): the sides meet through the mitered corners.
+        examples.join("profiles/bottle.obj"),
+        // An open surface: its boundary edges have one side only.
+        examples.join("profiles/vase.obj"),
+    ];
+    for path in &shapes {
+        let name = path.file_stem().unwrap().to_string_lossy();
+        // The bottle's flat base has rings narrower than 2% of the diagonal next to its
+        // crease: there the mitered inner offset folds (see corners.rs).
+        let fraction = if name == "bottle" { 0.01 } else { 0.02 };
+        let mesh = read_obj_file(path).unwrap().mesh;
         let opts = options(&mesh);
         let diag = mesh.bounding_box_diagonal();
-        let offset = OffsetSurface::new(&mesh, &opts, OffsetSettings::new(0.02 * diag)).unwrap();
+        let offset =
+            OffsetSurface::new(&mesh, &opts, OffsetSettings::new(fraction * diag)).unwrap();
         let base = Evaluator::new(&mesh, &opts).unwrap();
         let ptex = base.ptex_faces();
         // Each side of each face, keyed by its vertex pair.
@@ -164,7 +177,8 @@ fn offset_is_continuous_across_every_edge_of_closed_shapes() {
         let (mut tangent_jump, mut cross) = (0.0f64, 0.0f64);
         for (&(a, b), &(f, k)) in &sides {
             let Some(&(g, l)) = sides.get(&(b, a)) else {
-                panic!("{name}: edge {a}-{b} is a boundary");
+                assert!(name == "vase", "{name}: edge {a}-{b} is a boundary");
+                continue;
             };
             for i in 1..8 {
                 let t = i as f64 / 8.0;

@@ -88,6 +88,14 @@ pub struct DesignLattice {
 }
 
 impl DesignLattice {
+    /// The lattice of the design points `points` (face by face, `u` fastest).
+    pub fn from_points(points: Vec<DVec3>) -> DesignLattice {
+        DesignLattice {
+            points,
+            report: OnceLock::new(),
+        }
+    }
+
     /// The [`surface_report`] of `mesh` (the fitted mesh of these faces), computed on the
     /// first call and kept. Errors: those of [`surface_report`].
     pub fn report(&self, mesh: &Mesh) -> Result<&SurfaceReport> {
@@ -139,7 +147,7 @@ fn unwrap(x: f64, reference: f64, period: Option<f64>) -> f64 {
 }
 
 /// Bilinear interpolation of four corner values at `(u, v)` (Ptex corner order).
-fn bilinear<T>(c: [T; 4], u: f64, v: f64) -> T
+pub(crate) fn bilinear<T>(c: [T; 4], u: f64, v: f64) -> T
 where
     T: std::ops::Mul<f64, Output = T> + std::ops::Add<Output = T> + Copy,
 {

@@ -384,6 +384,3 @@ fn quadrant(s: f64, t: f64) -> (u32, f64, f64) {
         if top { 2.0 * t - 1.0 } else { 2.0 * t },
     )
 }
-
-#[cfg(test)]
-mod tests;

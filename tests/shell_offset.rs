@@ -259,3 +259,41 @@ fn bad_input_gives_specific_errors() {
         .to_string();
     assert!(e.contains("vertex 0 has no normal"), "{e}");
 }
+
+/// The README's thickness table: min / max / mean thickness over c at L = 0 and at the
+/// level a tolerance of 1 % of c chooses, on a sphere, a torus, the bottle, the vase and a
+/// creased cube. `cargo test --release --test shell_offset -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn thickness_table() {
+    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
+    let mut models = vec![("sphere (revolution, R = 2)".to_string(), sphere(), 0.05)];
+    if let Some(dir) = osd_shapes::shapes_dir() {
+        let torus = read_obj_file(&dir.join("catmark_torus.obj")).unwrap().mesh;
+        models.push(("catmark_torus".into(), torus, 0.02));
+    }
+    for (name, f) in [
+        ("profiles/bottle.obj", 0.005),
+        ("profiles/vase.obj", 0.01),
+        ("meshes/cube_creased.obj", 0.02),
+    ] {
+        models.push((name.into(), read_obj_file(&examples.join(name)).unwrap().mesh, f));
+    }
+    for (name, mesh, fraction) in &models {
+        let c = fraction * mesh.bounding_box_diagonal();
+        let opts = options(mesh);
+        let at0 = OffsetSurface::new(mesh, &opts, OffsetSettings::new(c)).unwrap();
+        let r = measure(&at0, 5).unwrap();
+        eprintln!(
+            "| {name} | {c:.4} | L = 0 | {:.4} | {:.4} | {:.4} |",
+            r.min, r.max, r.mean
+        );
+        match offset_within(mesh, &opts, OffsetSettings::new(c), 0.01 * c) {
+            Ok((_, r)) => eprintln!(
+                "| {name} | {c:.4} | t = 1 % c: L = {} | {:.4} | {:.4} | {:.4} |",
+                r.level, r.min, r.max, r.mean
+            ),
+            Err(e) => eprintln!("| {name} | {c:.4} | t = 1 % c | {e} |"),
+        }
+    }
+}

@@ -2,6 +2,9 @@
 //! sphere of radius R − c, continuity across every edge of OpenSubdiv's closed shapes with
 //! extraordinary vertices, and the errors of bad input.
 
+#[path = "support/arc.rs"]
+#[allow(dead_code)] // the arcs are not needed here
+mod arc;
 #[path = "support/osd_shapes.rs"]
 #[allow(dead_code)] // the shape index is not needed here
 mod osd_shapes;
@@ -16,13 +19,9 @@ const R: f64 = 2.0;
 
 /// A sphere of radius `R` by revolution of a semicircle (smooth poles).
 fn sphere() -> Mesh {
-    let profile: Vec<[f64; 2]> = (0..=64)
-        .map(|i| {
-            let t = -std::f64::consts::FRAC_PI_2 + std::f64::consts::PI * i as f64 / 64.0;
-            // The ends exactly on the axis: smooth poles.
-            let r = if i == 0 || i == 64 { 0.0 } else { R * t.cos() };
-            [r, R * t.sin()]
-        })
+    let profile: Vec<[f64; 2]> = arc::semicircle(64)
+        .into_iter()
+        .map(|[r, z]| [R * r, R * z])
         .collect();
     let mut input = RevolveInput::new(profile);
     (input.samples_profile, input.samples_around) = (32, 64);
@@ -267,7 +266,10 @@ fn bad_input_gives_specific_errors() {
 #[ignore]
 fn thickness_table() {
     let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
-    let mut models = vec![("sphere (revolution, R = 2)".to_string(), sphere(), 0.05)];
+    // (name, mesh, thickness over the bounding-box diagonal); the sphere's c = 0.05 R.
+    let sphere = sphere();
+    let f = 0.05 * R / sphere.bounding_box_diagonal();
+    let mut models = vec![("sphere (revolution, R = 2)".to_string(), sphere, f)];
     if let Some(dir) = osd_shapes::shapes_dir() {
         let torus = read_obj_file(&dir.join("catmark_torus.obj")).unwrap().mesh;
         models.push(("catmark_torus".into(), torus, 0.02));
@@ -277,7 +279,11 @@ fn thickness_table() {
         ("profiles/vase.obj", 0.01),
         ("meshes/cube_creased.obj", 0.02),
     ] {
-        models.push((name.into(), read_obj_file(&examples.join(name)).unwrap().mesh, f));
+        models.push((
+            name.into(),
+            read_obj_file(&examples.join(name)).unwrap().mesh,
+            f,
+        ));
     }
     for (name, mesh, fraction) in &models {
         let c = fraction * mesh.bounding_box_diagonal();

@@ -87,9 +87,9 @@ fn shells_of_an_open_vase_and_a_closed_bottle() {
             OffsetSurface::new(&mesh, &mesh.options().resolve(), OffsetSettings::new(c)).unwrap();
         let n = mesh.num_vertices();
         let outer = limit_vertex_samples(&mesh, &mesh.options().resolve()).unwrap();
-        for v in 0..n {
-            assert!((solid.targets[v] - outer[v].position).length() <= 1e-12 * diag);
-            let inner = outer[v].position - offset.corner_vectors()[v];
+        for (v, limit) in outer.iter().enumerate() {
+            assert!((solid.targets[v] - limit.position).length() <= 1e-12 * diag);
+            let inner = limit.position - offset.corner_vectors()[v];
             assert!((solid.targets[n + v] - inner).length() <= 1e-12 * diag);
         }
     }

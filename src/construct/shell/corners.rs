@@ -142,7 +142,8 @@ mod tests {
         let m = miter(&[DVec3::X, DVec3::Y, DVec3::Z], name).unwrap();
         assert!((m - DVec3::ONE).length() < 1e-9, "{m}");
         // A 30° crease.
-        let b = DVec3::new(math::cos(0.5236), math::sin(0.5236), 0.0);
+        let (sin, cos) = math::sin_cos(std::f64::consts::FRAC_PI_6);
+        let b = DVec3::new(cos, sin, 0.0);
         let m = miter(&[DVec3::X, b], name).unwrap();
         assert!((m.dot(DVec3::X) - 1.0).abs() < 1e-15 && (m.dot(b) - 1.0).abs() < 1e-15);
         // A knife edge (turning by 170°) is refused, naming the vertex.

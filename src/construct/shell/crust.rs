@@ -12,43 +12,16 @@
 
 use glam::DVec3;
 
-/// Binomial coefficients of degree 5.
-const BINOMIAL: [f64; 6] = [1.0, 5.0, 10.0, 10.0, 5.0, 1.0];
-
-/// The quintic Bernstein values `b_{i,5}(t)` and their derivatives.
-fn bernstein5(t: f64) -> ([f64; 6], [f64; 6]) {
-    let s = 1.0 - t;
-    let mut tp = [1.0; 6];
-    let mut sp = [1.0; 6];
-    for k in 1..6 {
-        tp[k] = tp[k - 1] * t;
-        sp[k] = sp[k - 1] * s;
-    }
-    let b = std::array::from_fn(|i| BINOMIAL[i] * tp[i] * sp[5 - i]);
-    // b'_{i,5} = 5 (b_{i-1,4} − b_{i,4}).
-    let b4 = |i: usize| -> f64 {
-        const BIN4: [f64; 5] = [1.0, 4.0, 6.0, 4.0, 1.0];
-        if i > 4 {
-            0.0
-        } else {
-            BIN4[i] * tp[i] * sp[4 - i]
-        }
-    };
-    let db = std::array::from_fn(|i| {
-        let prev = if i == 0 { 0.0 } else { b4(i - 1) };
-        5.0 * (prev - b4(i))
-    });
-    (b, db)
-}
-
 /// The weights of the low block (`i ∈ [0, 2]`) and the high block (`i ∈ [3, 5]`) at `t`,
-/// and their derivatives.
+/// and their derivatives: the high block's `b₃ + b₄ + b₅ = t³ (10 − 15 t + 6 t²)`, with
+/// derivative `30 t² (1 − t)²` (the unit tests check both against the Bernstein sums).
+#[inline]
 fn blocks(t: f64) -> ([f64; 2], [f64; 2]) {
-    let (b, db) = bernstein5(t);
-    (
-        [b[0] + b[1] + b[2], b[3] + b[4] + b[5]],
-        [db[0] + db[1] + db[2], db[3] + db[4] + db[5]],
-    )
+    let s = 1.0 - t;
+    let t2 = t * t;
+    let high = t2 * t * (10.0 + t * (-15.0 + 6.0 * t));
+    let dhigh = 30.0 * t2 * s * s;
+    ([1.0 - high, high], [-dhigh, dhigh])
 }
 
 /// The crust at `(u, v)` of a face with corner vectors `d` (Ptex corner order), and its
@@ -68,20 +41,49 @@ pub fn crust(d: &[DVec3; 4], u: f64, v: f64) -> (DVec3, DVec3, DVec3) {
 mod tests {
     use super::*;
 
+    /// Binomial coefficients of degree 5.
+    const BINOMIAL: [f64; 6] = [1.0, 5.0, 10.0, 10.0, 5.0, 1.0];
+
+    /// The quintic Bernstein values `b_{i,5}(t)` and their derivatives.
+    fn bernstein5(t: f64) -> ([f64; 6], [f64; 6]) {
+        let s = 1.0 - t;
+        let mut tp = [1.0; 6];
+        let mut sp = [1.0; 6];
+        for k in 1..6 {
+            tp[k] = tp[k - 1] * t;
+            sp[k] = sp[k - 1] * s;
+        }
+        let b = std::array::from_fn(|i| BINOMIAL[i] * tp[i] * sp[5 - i]);
+        // b'_{i,5} = 5 (b_{i-1,4} − b_{i,4}).
+        let b4 = |i: usize| -> f64 {
+            const BIN4: [f64; 5] = [1.0, 4.0, 6.0, 4.0, 1.0];
+            if i > 4 {
+                0.0
+            } else {
+                BIN4[i] * tp[i] * sp[4 - i]
+            }
+        };
+        let db = std::array::from_fn(|i| {
+            let prev = if i == 0 { 0.0 } else { b4(i - 1) };
+            5.0 * (prev - b4(i))
+        });
+        (b, db)
+    }
+
     /// The literal 6 × 6 Bernstein sum of the issue, coefficient by coefficient.
     fn literal(d: &[DVec3; 4], u: f64, v: f64) -> DVec3 {
         let (bu, _) = bernstein5(u);
         let (bv, _) = bernstein5(v);
         let mut sum = DVec3::ZERO;
-        for i in 0..6 {
-            for j in 0..6 {
+        for (i, bi) in bu.iter().enumerate() {
+            for (j, bj) in bv.iter().enumerate() {
                 let corner = match (i >= 3, j >= 3) {
                     (false, false) => 0,
                     (true, false) => 1,
                     (true, true) => 2,
                     (false, true) => 3,
                 };
-                sum += d[corner] * (bu[i] * bv[j]);
+                sum += d[corner] * (bi * bj);
             }
         }
         sum
@@ -94,6 +96,18 @@ mod tests {
             DVec3::new(0.2, -0.4, 1.1),
             DVec3::new(0.05, 0.3, 0.8),
         ]
+    }
+
+    #[test]
+    fn block_weights_are_the_bernstein_sums() {
+        for t in [0.0, 0.1, 0.25, 0.5, 0.77, 1.0] {
+            let (b, db) = bernstein5(t);
+            let ([low, high], [dlow, dhigh]) = blocks(t);
+            assert!((low - (b[0] + b[1] + b[2])).abs() < 1e-15);
+            assert!((high - (b[3] + b[4] + b[5])).abs() < 1e-15);
+            assert!((dlow - (db[0] + db[1] + db[2])).abs() < 1e-13);
+            assert!((dhigh - (db[3] + db[4] + db[5])).abs() < 1e-13);
+        }
     }
 
     #[test]
@@ -134,7 +148,7 @@ mod tests {
             assert_eq!(da_v, DVec3::ZERO);
             assert_eq!(db_v, DVec3::ZERO);
             // Second cross derivative by differences of the first.
-            let h = 1e-5;
+            let h = 1e-6;
             let second = (crust(&other, u, h).2 - crust(&other, u, 0.0).2) / h;
             assert!(second.length() < 1e-3, "{second}");
         }

@@ -204,7 +204,16 @@ pub fn offset_within(
     }
     let mut reached = Vec::new();
     for level in settings.level..=MAX_LEVEL {
-        let offset = OffsetSurface::new(mesh, options, OffsetSettings { level, ..settings })?;
+        let offset = match OffsetSurface::new(mesh, options, OffsetSettings { level, ..settings }) {
+            Ok(o) => o,
+            // A finer crust can fold where a coarser one did not (refined faces next to a
+            // crease narrower than the miter's sideways reach): say how far it got.
+            Err(e) if level > settings.level => {
+                reached.push(format!("level {level}: {e}"));
+                break;
+            }
+            Err(e) => return Err(e),
+        };
         let report = measure(&offset, TOLERANCE_LATTICE)?;
         if report.max_error <= tolerance {
             return Ok((offset, report));

@@ -1391,8 +1391,8 @@ enum profsubd_status profsubd_revolve(const double *profile,
  * `domain` (`PROFSUBD_DOMAIN_PTEX` or `_BFR`): `positions` (3 doubles a point) and, when
  * not NULL, `du` and `dv` (the offset's derivatives, in the domain's units) and
  * `has_surface` (0 where there is no limit surface: NaN written). The crust is built on
- * the surface refined `level` times (0 to 6; 0: the paper's scheme), or with `tolerance`
- * > 0 (model units) at the lowest level from `level` on whose measured thickness is within
+ * the surface refined `level` times (0 to 6; 0: the paper's scheme), or with a positive
+ * `tolerance` (model units) at the lowest level from `level` on whose measured thickness is within
  * it of `thickness` (0: no tolerance). `flags`: `PROFSUBD_OFFSET_OUTWARD`,
  * `PROFSUBD_OFFSET_ACCEPT_FOLDS`. The offset is built at each call (cost of an evaluator of
  * the refined mesh): batch the points. Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, nothing

@@ -7,15 +7,14 @@
 //! `--tolerance` the crust level is chosen and reported on stderr with the measured
 //! thickness. Nothing is printed on error.
 
-use std::io::Write as _;
 use std::path::PathBuf;
 
 use clap::Args;
 
-use super::limit::{format_samples, read_points, DomainArg};
+use super::limit::{print_samples, read_points, DomainArg};
 use super::{read_mesh, SubdivFlags};
 use crate::construct::shell::{offset_within, OffsetSettings, OffsetSurface, Side};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::eval::{Domain, LimitSample};
 
 /// Arguments of `offset`.
@@ -36,6 +35,17 @@ pub struct OffsetArgs {
     /// Append the derivatives of the offset with respect to u and v.
     #[arg(long)]
     pub derivs: bool,
+    /// Side, crust level or tolerance, folds.
+    #[command(flatten)]
+    pub offset: OffsetFlags,
+    /// Subdivision options.
+    #[command(flatten)]
+    pub options: SubdivFlags,
+}
+
+/// The offset flags `offset` and `shell` share.
+#[derive(Debug, Clone, Args)]
+pub struct OffsetFlags {
     /// Offset along the normal S_u x S_v instead of against it (inward is the default).
     #[arg(long)]
     pub outward: bool,
@@ -50,33 +60,45 @@ pub struct OffsetArgs {
     /// Choose the lowest level at which |thickness - c| <= T at every sample (model units).
     #[arg(long, value_name = "T")]
     pub tolerance: Option<f64>,
-    /// Accept points where the offset folds instead of failing.
+    /// Accept an offset that folds instead of failing.
     #[arg(long)]
     pub accept_folds: bool,
-    /// Subdivision options.
-    #[command(flatten)]
-    pub options: SubdivFlags,
 }
 
-impl OffsetArgs {
-    /// The offset settings the flags give.
-    pub fn settings(&self) -> OffsetSettings {
-        Self::settings_of(self.thickness, self.outward, self.level, self.accept_folds)
-    }
-
-    /// The offset settings of the flags `--thickness`, `--outward`, `--level` and
-    /// `--accept-folds` (shared with `shell`).
-    pub fn settings_of(
-        thickness: f64,
-        outward: bool,
-        level: u32,
-        accept_folds: bool,
-    ) -> OffsetSettings {
+impl OffsetFlags {
+    /// The offset settings of these flags and thickness `c`.
+    pub fn settings(&self, thickness: f64) -> OffsetSettings {
         OffsetSettings {
             thickness,
-            side: if outward { Side::Outward } else { Side::Inward },
-            level,
-            accept_folds,
+            side: if self.outward {
+                Side::Outward
+            } else {
+                Side::Inward
+            },
+            level: self.level,
+            accept_folds: self.accept_folds,
+        }
+    }
+
+    /// The offset of `mesh` under `options` these flags ask for; with a tolerance, the
+    /// chosen level and measured thickness go to stderr.
+    pub fn offset(
+        &self,
+        mesh: &crate::mesh::Mesh,
+        options: &crate::options::SubdivOptions,
+        thickness: f64,
+    ) -> Result<OffsetSurface> {
+        let settings = self.settings(thickness);
+        match self.tolerance {
+            None => OffsetSurface::new(mesh, options, settings),
+            Some(t) => {
+                let (offset, r) = offset_within(mesh, options, settings, t)?;
+                eprintln!(
+                    "level {}: thickness / c min {:.6} max {:.6} mean {:.6} at {} samples",
+                    r.level, r.min, r.max, r.mean, r.samples
+                );
+                Ok(offset)
+            }
         }
     }
 }
@@ -86,17 +108,7 @@ pub fn run(args: &OffsetArgs) -> Result<i32> {
     let mesh = read_mesh(&args.input)?;
     let options = args.options.partial().over(mesh.options()).resolve();
     let points = read_points(&args.at)?;
-    let offset = match args.tolerance {
-        None => OffsetSurface::new(&mesh, &options, args.settings())?,
-        Some(t) => {
-            let (offset, r) = offset_within(&mesh, &options, args.settings(), t)?;
-            eprintln!(
-                "level {}: thickness / c min {:.6} max {:.6} mean {:.6} at {} samples",
-                r.level, r.min, r.max, r.mean, r.samples
-            );
-            offset
-        }
-    };
+    let offset = args.offset.offset(&mesh, &options, args.thickness)?;
     let domain = match args.domain {
         DomainArg::Ptex => Domain::Ptex,
         DomainArg::Bfr => Domain::Bfr,
@@ -107,21 +119,8 @@ pub fn run(args: &OffsetArgs) -> Result<i32> {
     let samples: Vec<Option<LimitSample>> = offset
         .evaluate_points(domain, &faces, &u, &v)?
         .into_iter()
-        .map(|o| {
-            o.map(|o| LimitSample {
-                position: o.position,
-                du: o.du,
-                dv: o.dv,
-            })
-        })
+        .map(|o| o.map(|o| o.offset()))
         .collect();
-    let text = format_samples(&samples, args.derivs);
-    std::io::stdout()
-        .lock()
-        .write_all(text.as_bytes())
-        .map_err(|e| Error::Io {
-            path: PathBuf::from("<stdout>"),
-            message: e.to_string(),
-        })?;
+    print_samples(&samples, args.derivs)?;
     Ok(0)
 }

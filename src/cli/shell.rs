@@ -9,9 +9,9 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::construct::{write_fitted, SurfaceOutput};
-use super::offset::OffsetArgs;
+use super::offset::OffsetFlags;
 use super::read_mesh;
-use crate::construct::shell::{hollow_solid, ShellInput};
+use crate::construct::shell::hollow_solid;
 use crate::error::Result;
 use crate::eval::Evaluator;
 use crate::io::surface::{write_surface_file, SurfaceFormat};
@@ -33,42 +33,16 @@ pub struct ShellArgs {
     /// Also write a binary STL of the solid's limit surface (tessellated at rate 4 a face).
     #[arg(long, value_name = "SHELL.stl")]
     pub stl: Option<PathBuf>,
-    /// The inner wall outside (along S_u x S_v) instead of inside.
-    #[arg(long)]
-    pub outward: bool,
-    /// The crust's refinement level (0: the paper's scheme on the mesh itself).
-    #[arg(
-        long,
-        value_name = "L",
-        default_value_t = 0,
-        conflicts_with = "tolerance"
-    )]
-    pub level: u32,
-    /// Choose the lowest level at which |thickness - c| <= T at every sample (model units).
-    #[arg(long, value_name = "T")]
-    pub tolerance: Option<f64>,
-    /// Accept an offset that folds instead of failing.
-    #[arg(long)]
-    pub accept_folds: bool,
+    /// Side (--outward: the inner wall outside), crust level or tolerance, folds.
+    #[command(flatten)]
+    pub offset: OffsetFlags,
 }
 
 /// Run `shell`; returns exit code 0 on success.
 pub fn run(args: &ShellArgs) -> Result<i32> {
     let mesh = read_mesh(&args.input)?;
-    let settings =
-        OffsetArgs::settings_of(args.thickness, args.outward, args.level, args.accept_folds);
-    let input = ShellInput {
-        mesh,
-        offset: settings,
-        tolerance: args.tolerance,
-    };
-    let (offset, report) = input.offset()?;
-    if let Some(r) = report {
-        eprintln!(
-            "level {}: thickness / c min {:.6} max {:.6} mean {:.6} at {} samples",
-            r.level, r.min, r.max, r.mean, r.samples
-        );
-    }
+    let options = mesh.options().resolve();
+    let offset = args.offset.offset(&mesh, &options, args.thickness)?;
     let fitted = hollow_solid(&offset)?;
     // Tessellate before writing anything, so that a failure writes nothing.
     let stl = match &args.stl {

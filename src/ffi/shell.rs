@@ -104,13 +104,7 @@ pub unsafe extern "C" fn profsubd_offset_evaluate(
         let samples: Vec<Option<LimitSample>> = offset
             .evaluate_points(domain, faces, us, vs)?
             .into_iter()
-            .map(|o| {
-                o.map(|o| LimitSample {
-                    position: o.position,
-                    du: o.du,
-                    dv: o.dv,
-                })
-            })
+            .map(|o| o.map(|o| o.offset()))
             .collect();
         write_marked(&samples, pos, du, dv, mask);
         Ok(())

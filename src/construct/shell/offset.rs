@@ -98,6 +98,20 @@ impl OffsetSample {
     /// or `O_u · S_u ≤ 0` or `O_v · S_v ≤ 0` (it passed both, as inside a sphere thinner
     /// than the thickness, where the orientation comes back).
     pub fn folds(&self) -> bool {
+        self.folds_inner()
+    }
+
+    /// The offset's own position and derivatives, as a [`LimitSample`] (what the CLI and
+    /// the C API print and write).
+    pub fn offset(&self) -> LimitSample {
+        LimitSample {
+            position: self.position,
+            du: self.du,
+            dv: self.dv,
+        }
+    }
+
+    fn folds_inner(&self) -> bool {
         let s = &self.surface;
         self.du.cross(self.dv).dot(s.du.cross(s.dv)) <= 0.0
             || self.du.dot(s.du) <= 0.0

@@ -278,6 +278,7 @@ fn thickness_table() {
         ("profiles/bottle.obj", 0.005),
         ("profiles/vase.obj", 0.01),
         ("meshes/cube_creased.obj", 0.02),
+        ("meshes/cube_creased.obj", 0.002),
     ] {
         models.push((
             name.into(),

@@ -299,14 +299,7 @@ impl OffsetSurface {
         u: &[f64],
         v: &[f64],
     ) -> Result<Vec<Option<OffsetSample>>> {
-        if faces.len() != u.len() || faces.len() != v.len() {
-            return Err(Error::invalid_argument(format!(
-                "{} faces, {} u and {} v values: the three lists must have the same length",
-                faces.len(),
-                u.len(),
-                v.len()
-            )));
-        }
+        crate::eval::evaluator::check_point_lists(faces, u, v)?;
         let point = |i: usize, m: String| Error::InvalidArgument(format!("point {i}: {m}"));
         let mut out = Vec::with_capacity(faces.len());
         for i in 0..faces.len() {

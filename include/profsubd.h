@@ -1432,6 +1432,57 @@ enum profsubd_status profsubd_revolve(const double *profile,
                                       struct profsubd_fitted **out);
 
 /**
+ * The offset `O = S - D` of `mesh`'s limit surface under `options` (NULL: the mesh's tags,
+ * then the defaults) by `thickness` (> 0) at `n` points `(faces[i], u[i], v[i])` given in
+ * `domain` (`PROFSUBD_DOMAIN_PTEX` or `_BFR`): `positions` (3 doubles a point) and, when
+ * not NULL, `du` and `dv` (the offset's derivatives, in the domain's units) and
+ * `has_surface` (0 where there is no limit surface: NaN written). The crust is built on
+ * the surface refined `level` times (0 to 6; 0: the paper's scheme), or with a positive
+ * `tolerance` (model units) at the lowest level from `level` on whose measured thickness is within
+ * it of `thickness` (0: no tolerance). `flags`: `PROFSUBD_OFFSET_OUTWARD`,
+ * `PROFSUBD_OFFSET_ACCEPT_FOLDS`. The offset is built at each call (cost of an evaluator of
+ * the refined mesh): batch the points. Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, nothing
+ * written): thickness not > 0 or NaN, a bad level, flag or tolerance, a non-manifold mesh,
+ * a vertex without normal or a crease too sharp to miter (naming the vertex), an offset
+ * that folds (naming where) without `PROFSUBD_OFFSET_ACCEPT_FOLDS`, a tolerance no level
+ * meets, a bad point (naming its index).
+ */
+enum profsubd_status profsubd_offset_evaluate(const struct profsubd_mesh *mesh,
+                                              const struct profsubd_options *options,
+                                              double thickness,
+                                              uint32_t level,
+                                              double tolerance,
+                                              int32_t flags,
+                                              int32_t domain,
+                                              const uint32_t *faces,
+                                              const double *u,
+                                              const double *v,
+                                              size_t n,
+                                              double *positions,
+                                              double *du,
+                                              double *dv,
+                                              uint8_t *has_surface);
+
+/**
+ * Build the hollow solid of `mesh` (manifold; its tags give the subdivision options): the
+ * outer wall (the mesh refined `level` times, same limit surface), the inner wall at the
+ * offset by `thickness` (same topology, faces reversed), and for open surfaces a rim of
+ * quads creased infinitely sharp where it meets the walls, fitted so that its limit
+ * passes through the outer limit and the offset at every vertex (`profsubd_fitted_get_targets`).
+ * `level`, `tolerance` and `flags` as in `profsubd_offset_evaluate`; `options` may be
+ * NULL (the construction settings do not apply). Errors: those of
+ * `profsubd_offset_evaluate`'s offset; `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
+ * tolerance.
+ */
+enum profsubd_status profsubd_shell(const struct profsubd_mesh *mesh,
+                                    double thickness,
+                                    uint32_t level,
+                                    double tolerance,
+                                    int32_t flags,
+                                    const struct profsubd_options *options,
+                                    struct profsubd_fitted **out);
+
+/**
  * Sweep a planar profile along a trajectory: `profile` holds `num_profile_points` points
  * `(a, b)` (2 doubles each; `a` along the frame's normal, `b` along its binormal),
  * `trajectory` holds `num_trajectory_points` points `(x, y, z)` (3 doubles each). Settings

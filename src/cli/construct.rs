@@ -85,7 +85,7 @@ pub fn run<I>(
 }
 
 /// Write the mesh (and the targets when asked), then a one-line summary on stdout.
-pub(super) fn write_fitted(s: &Fitted, out: &SurfaceOutput) -> Result<()> {
+pub(crate) fn write_fitted(s: &Fitted, out: &SurfaceOutput) -> Result<()> {
     let output = &out.output;
     let targets = out.targets.as_ref().map(|_| {
         let mut text = String::with_capacity(s.targets.len() * 60);

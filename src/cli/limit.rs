@@ -103,15 +103,20 @@ pub fn run(args: &LimitArgs) -> Result<i32> {
     if args.strict && args.at.is_none() {
         require_surface(samples.clone(), "vertex")?;
     }
-    let text = format_samples(&samples, args.derivs);
+    print_samples(&samples, args.derivs)?;
+    Ok(0)
+}
+
+/// Print [`format_samples`] on stdout.
+pub(crate) fn print_samples(samples: &[Option<LimitSample>], derivs: bool) -> Result<()> {
+    let text = format_samples(samples, derivs);
     std::io::stdout()
         .lock()
         .write_all(text.as_bytes())
         .map_err(|e| Error::Io {
             path: PathBuf::from("<stdout>"),
             message: e.to_string(),
-        })?;
-    Ok(0)
+        })
 }
 
 /// One `face u v` line of a points file.

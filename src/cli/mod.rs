@@ -16,9 +16,11 @@ pub mod construct;
 pub mod convert;
 pub mod curves;
 pub mod limit;
+pub mod offset;
 pub mod profile;
 pub mod refine;
 pub mod revolve;
+pub mod shell;
 pub mod sweep;
 pub mod tessellate;
 
@@ -96,6 +98,25 @@ pub enum Command {
     /// parameterization. A vertex or point without limit surface (isolated vertex, holes,
     /// boundary faces under --boundary none) prints `nan nan nan`; --strict fails instead.
     Limit(limit::LimitArgs),
+    /// Offset the limit surface by a thickness (a Bézier crust) at (face, u, v) points.
+    ///
+    /// O = S - D: the exact limit S minus a bi-quintic crust whose corners are the
+    /// thickness times the exact limit normal (mitered at creases and corners), inward
+    /// (against S_u x S_v) unless --outward. --at POINTS.txt as `limit`; one line `x y z`
+    /// per point, --derivs appends the offset's derivatives. --level L builds the crust on
+    /// the surface refined L times; --tolerance T chooses the lowest level whose measured
+    /// thickness is within T of c. A thickness beyond the radius of curvature folds the
+    /// offset: an error unless --accept-folds.
+    Offset(offset::OffsetArgs),
+    /// Build a hollow solid: the surface, its offset by a thickness, and a rim.
+    ///
+    /// Writes one closed, consistently oriented quad mesh with tags: the outer wall (the
+    /// input refined to the crust's level, same limit surface), the inner wall (same
+    /// topology, faces reversed) and for open surfaces a rim of quads creased infinitely
+    /// sharp where it meets the walls, fitted so that its limit passes through the outer
+    /// limit and the offset (see `offset`) at every vertex. --stl also writes the limit
+    /// surface tessellated. --targets writes the data points.
+    Shell(shell::ShellArgs),
     /// Build an interpolating Catmull-Clark mesh from profile curves (Hui & Lai).
     ///
     /// Reads four planar silhouettes from JSON (c1: +x, c2: +y, c3: -x, c4: -y; c3/c4
@@ -258,6 +279,8 @@ pub fn dispatch(command: &Command) -> Result<i32> {
         Command::Convert(args) => convert::run(args),
         Command::Refine(args) => refine::run(args),
         Command::Limit(args) => limit::run(args),
+        Command::Offset(args) => offset::run(args),
+        Command::Shell(args) => shell::run(args),
         Command::Profile(args) => profile::run(args),
         Command::Revolve(args) => revolve::run(args),
         Command::Blend(args) => blend::run(args),

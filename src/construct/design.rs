@@ -89,8 +89,8 @@ pub struct DesignLattice {
 
 impl DesignLattice {
     /// A lattice of given design points (face by face, `u` fastest), for constructions
-    /// whose design surface is sampled directly (the GBS blend).
-    pub(crate) fn from_points(points: Vec<DVec3>) -> DesignLattice {
+    /// whose design surface is sampled directly (the GBS blend, shells).
+    pub fn from_points(points: Vec<DVec3>) -> DesignLattice {
         DesignLattice {
             points,
             report: OnceLock::new(),
@@ -148,7 +148,7 @@ fn unwrap(x: f64, reference: f64, period: Option<f64>) -> f64 {
 }
 
 /// Bilinear interpolation of four corner values at `(u, v)` (Ptex corner order).
-fn bilinear<T>(c: [T; 4], u: f64, v: f64) -> T
+pub(crate) fn bilinear<T>(c: [T; 4], u: f64, v: f64) -> T
 where
     T: std::ops::Mul<f64, Output = T> + std::ops::Add<Output = T> + Copy,
 {

@@ -33,6 +33,7 @@ pub(crate) mod pole_cap;
 pub mod profile;
 pub mod revolve;
 pub mod settings;
+pub mod shell;
 pub mod sweep;
 
 pub use fitted::Fitted;

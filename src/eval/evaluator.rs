@@ -556,6 +556,17 @@ fn each_point<T: Send>(
     threads: usize,
     eval: impl Fn(u32, f64, f64) -> Result<T> + Sync,
 ) -> Result<Vec<T>> {
+    check_point_lists(faces, u, v)?;
+    super::parallel::try_map(faces.len(), threads, |i| {
+        eval(faces[i], u[i], v[i]).map_err(|e| match e {
+            Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
+            other => other,
+        })
+    })
+}
+
+/// A batch's `faces`, `u` and `v` must have the same length ([`Error::InvalidArgument`]).
+pub(crate) fn check_point_lists(faces: &[u32], u: &[f64], v: &[f64]) -> Result<()> {
     if faces.len() != u.len() || faces.len() != v.len() {
         return Err(Error::invalid_argument(format!(
             "{} faces, {} u and {} v values: the three lists must have the same length",
@@ -564,12 +575,7 @@ fn each_point<T: Send>(
             v.len()
         )));
     }
-    super::parallel::try_map(faces.len(), threads, |i| {
-        eval(faces[i], u[i], v[i]).map_err(|e| match e {
-            Error::InvalidArgument(m) => Error::InvalidArgument(format!("point {i}: {m}")),
-            other => other,
-        })
-    })
+    Ok(())
 }
 
 /// One level of refinement of fragment `nb` with vertex data `values`; the children of its

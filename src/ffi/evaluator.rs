@@ -153,7 +153,7 @@ pub unsafe extern "C" fn profsubd_evaluator_face_to_parametric(
 }
 
 /// An optional output array of `n` items of `width` elements each.
-unsafe fn optional_out<'a, T>(
+pub(crate) unsafe fn optional_out<'a, T>(
     p: *mut T,
     n: usize,
     width: usize,
@@ -168,7 +168,7 @@ unsafe fn optional_out<'a, T>(
 }
 
 /// An optional output array of `n` points (3 doubles each).
-unsafe fn optional_points<'a>(
+pub(crate) unsafe fn optional_points<'a>(
     p: *mut f64,
     n: usize,
     name: &str,
@@ -193,7 +193,7 @@ pub enum profsubd_domain {
     PROFSUBD_DOMAIN_BFR = 1,
 }
 
-fn domain_arg(domain: i32) -> FfiResult<Domain> {
+pub(crate) fn domain_arg(domain: i32) -> FfiResult<Domain> {
     use profsubd_domain::*;
     match domain {
         d if d == PROFSUBD_DOMAIN_PTEX as i32 => Ok(Domain::Ptex),
@@ -216,7 +216,7 @@ fn strict_arg(strict: i32) -> FfiResult<bool> {
 }
 
 /// Write the samples (`None`: NaN) and the has-surface mask into the caller's buffers.
-fn write_marked(
+pub(crate) fn write_marked(
     samples: &[Option<LimitSample>],
     pos: &mut [MaybeUninit<f64>],
     du: Option<&mut [MaybeUninit<f64>]>,

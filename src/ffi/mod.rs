@@ -70,6 +70,7 @@ pub mod profile;
 pub mod ptr;
 pub mod refine;
 pub mod revolve;
+pub mod shell;
 pub mod status;
 pub mod sweep;
 pub mod tessellate;

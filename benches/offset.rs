@@ -1,0 +1,79 @@
+//! Offset evaluation (`construct::shell`) beside plain limit evaluation at the same random
+//! points, one thread, and the hollow solid's construction beside its evaluator's build.
+//!
+//! `cargo bench --bench offset`. Absolute times; the README quotes the ratio offset / limit
+//! from one run (not asserted).
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use profsubd::construct::shell::{hollow_solid, OffsetSettings, OffsetSurface};
+use profsubd::eval::Evaluator;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+mod support;
+
+fn benches(c: &mut Criterion) {
+    let model = support::bottle(64, 48);
+    let mesh = &model.mesh;
+    let options = mesh.options().resolve();
+    let label = format!("bottle {} quads", mesh.num_faces());
+    let thickness = 0.002 * mesh.bounding_box_diagonal();
+    let ev = Evaluator::new(mesh, &options).unwrap();
+    let n = 10_000;
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    let faces: Vec<u32> = (0..n)
+        .map(|_| rng.random_range(0..ev.num_parametric_faces() as u32))
+        .collect();
+    let us: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+    let vs: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+    c.bench_function(&format!("limit at {n} random points, {label}"), |b| {
+        b.iter(|| {
+            for i in 0..n {
+                std::hint::black_box(ev.evaluate(faces[i], us[i], vs[i]).unwrap());
+            }
+        })
+    });
+    for level in [0, 2] {
+        // Timing only: the level-2 crust folds next to this model's creases (see the README).
+        let settings = OffsetSettings {
+            level,
+            accept_folds: true,
+            ..OffsetSettings::new(thickness)
+        };
+        let offset = OffsetSurface::new(mesh, &options, settings).unwrap();
+        c.bench_function(
+            &format!("offset at {n} random points, level {level}, {label}"),
+            |b| {
+                b.iter(|| {
+                    for i in 0..n {
+                        std::hint::black_box(offset.evaluate(faces[i], us[i], vs[i]).unwrap());
+                    }
+                })
+            },
+        );
+    }
+
+    let big = support::bottle(128, 80);
+    let big_mesh = &big.mesh;
+    let big_label = format!("bottle {} quads", big_mesh.num_faces());
+    let mut group = c.benchmark_group("shell");
+    group.sample_size(10);
+    group.bench_function(format!("evaluator build, {big_label}"), |b| {
+        b.iter(|| Evaluator::new(big_mesh, &options).unwrap())
+    });
+    group.bench_function(format!("hollow solid (offset + fit), {big_label}"), |b| {
+        b.iter(|| {
+            let offset = OffsetSurface::new(
+                big_mesh,
+                &options,
+                OffsetSettings::new(0.002 * big_mesh.bounding_box_diagonal()),
+            )
+            .unwrap();
+            hollow_solid(&offset).unwrap()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(offset, benches);
+criterion_main!(offset);

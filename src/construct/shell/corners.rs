@@ -1,0 +1,159 @@
+//! The corner vector of every vertex of the crust's mesh: the direction and length by which
+//! the offset leaves the surface at that vertex.
+//!
+//! - **Smooth vertex** (all its faces share one tangent plane: interior smooth vertices,
+//!   extraordinary ones, darts, semi-sharp features, boundary vertices of open surfaces):
+//!   `c n`, with `n` the exact unit limit normal, taken at the corner of the vertex's first
+//!   face (the evaluator's exact corner limit; at extraordinary vertices its tangent plane is
+//!   exact).
+//! - **Crease or corner vertex** (infinitely sharp edges split its faces into sectors with
+//!   different one-sided normals `n₁ … n_k`): one *mitered* vector `c m` shared by all its
+//!   faces, `m` the shortest vector with `m · nᵢ = 1` for every sector (two sectors:
+//!   `m = (n₁ + n₂) / (1 + n₁ · n₂)`; three or more: least squares). The offset of each side
+//!   then lies at distance `c` from that side's tangent plane at the vertex, and the two
+//!   sides of a crease meet on one curve (a watertight inner surface); the distance from
+//!   the offset crease to the surface crease is `c |m| = c / cos(θ/2)` for a crease whose
+//!   sides turn by θ. A crease turning by more than [`MAX_MITER_TURN_DEG`] is refused: the
+//!   miter would be more than 4 thicknesses long.
+//! - **No normal** (the derivatives are parallel at every face corner of the vertex: a
+//!   collapsed control mesh): an error naming the vertex.
+
+use glam::{DMat3, DVec3};
+
+use crate::error::{Error, Result};
+use crate::eval::Evaluator;
+use crate::math;
+use crate::mesh::Mesh;
+
+/// Largest crease turning angle a miter accepts (its length is then `1 / cos(θ/2)` = 4).
+pub const MAX_MITER_TURN_DEG: f64 = 151.04;
+
+/// Two unit normals closer than this (`1 − n₁ · n₂`) belong to one sector.
+const SAME_SECTOR: f64 = 1e-10;
+
+/// A corner's `|du × dv|` below this fraction of `|du| |dv|`, or a derivative shorter than
+/// this fraction of the mesh's bounding-box diagonal, has no normal.
+const NO_NORMAL: f64 = 1e-12;
+
+/// The Ptex `(u, v)` of corner `k` of a quad.
+pub const CORNER_UV: [(f64, f64); 4] = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+
+/// The unit normal at corner `k` of quad `face` of `ev`'s mesh, `None` where the
+/// derivatives are parallel or the face has no surface.
+fn corner_normal(ev: &Evaluator, face: u32, k: usize, diag: f64) -> Result<Option<DVec3>> {
+    if !ev.has_surface(face) {
+        return Ok(None);
+    }
+    let (u, v) = CORNER_UV[k];
+    let s = ev.evaluate(face, u, v)?;
+    let cross = s.du.cross(s.dv);
+    let (a, b) = (s.du.length(), s.dv.length());
+    let tiny = NO_NORMAL * diag;
+    Ok(
+        (a > tiny && b > tiny && cross.length() > NO_NORMAL * a * b)
+            .then(|| cross / cross.length()),
+    )
+}
+
+/// The unit corner direction `m` (before scaling by the thickness) of every vertex of `ev`'s
+/// quad mesh, in vertex order; a vertex in no face with surface gets the zero vector.
+/// `name` names a vertex in messages.
+///
+/// Errors ([`Error::InvalidArgument`]): a vertex with faces but no normal; a crease turning
+/// by more than [`MAX_MITER_TURN_DEG`].
+pub fn corner_directions(ev: &Evaluator, name: &dyn Fn(usize) -> String) -> Result<Vec<DVec3>> {
+    let mesh: &Mesh = ev.mesh();
+    let n = mesh.num_vertices();
+    let diag = mesh.bounding_box_diagonal();
+    // Per vertex: whether it has a face with surface, and its distinct sector normals.
+    let mut has_face = vec![false; n];
+    let mut sectors: Vec<Vec<DVec3>> = vec![Vec::new(); n];
+    for f in 0..mesh.num_faces() {
+        let face = mesh.face(f);
+        for (k, &vertex) in face.iter().enumerate() {
+            let v = vertex as usize;
+            if !ev.has_surface(f as u32) {
+                continue;
+            }
+            has_face[v] = true;
+            if let Some(normal) = corner_normal(ev, f as u32, k, diag)? {
+                if !sectors[v].iter().any(|s| 1.0 - s.dot(normal) < SAME_SECTOR) {
+                    sectors[v].push(normal);
+                }
+            }
+        }
+    }
+    (0..n)
+        .map(|v| match sectors[v].as_slice() {
+            [] if has_face[v] => Err(Error::invalid_argument(format!(
+                "{} has no normal: the limit surface's derivatives are parallel at every face \
+                 corner there (a collapsed control mesh); move its control points apart",
+                name(v)
+            ))),
+            [] => Ok(DVec3::ZERO),
+            [normal] => Ok(*normal),
+            normals => miter(normals, || name(v)),
+        })
+        .collect()
+}
+
+/// The shortest `m` with `m · nᵢ = 1` for the unit normals `normals` (least squares when
+/// they disagree), refused past [`MAX_MITER_TURN_DEG`].
+fn miter(normals: &[DVec3], name: impl Fn() -> String) -> Result<DVec3> {
+    let m = if let [a, b] = normals {
+        (*a + *b) / (1.0 + a.dot(*b))
+    } else {
+        // Normal equations (Nᵀ N) m = Nᵀ 1, with a tiny ridge so that coplanar normals give
+        // the shortest solution.
+        let mut ntn = DMat3::ZERO;
+        let mut rhs = DVec3::ZERO;
+        for &n in normals {
+            ntn += DMat3::from_cols(n * n.x, n * n.y, n * n.z);
+            rhs += n;
+        }
+        let ridge = 1e-12 * (ntn.x_axis.x + ntn.y_axis.y + ntn.z_axis.z);
+        (ntn + DMat3::from_diagonal(DVec3::splat(ridge))).inverse() * rhs
+    };
+    let limit = 1.0 / math::cos(MAX_MITER_TURN_DEG.to_radians() / 2.0);
+    if m.is_finite() && m.length() <= limit {
+        Ok(m)
+    } else {
+        Err(Error::invalid_argument(format!(
+            "the sides meeting at {} turn by more than {MAX_MITER_TURN_DEG}°: their offsets \
+             would meet more than {limit:.3} thicknesses away (|miter| = {:.3}); soften the \
+             crease or lower the thickness",
+            name(),
+            m.length()
+        )))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn miters_are_at_unit_distance_from_every_sector_plane() {
+        let name = || "vertex 0".to_string();
+        // A right-angled crease: m = (1, 1, 0), |m| = √2.
+        let m = miter(&[DVec3::X, DVec3::Y], name).unwrap();
+        assert!((m - DVec3::new(1.0, 1.0, 0.0)).length() < 1e-15);
+        // A cube corner: (1, 1, 1).
+        let m = miter(&[DVec3::X, DVec3::Y, DVec3::Z], name).unwrap();
+        assert!((m - DVec3::ONE).length() < 1e-9, "{m}");
+        // A 30° crease.
+        let (sin, cos) = math::sin_cos(std::f64::consts::FRAC_PI_6);
+        let b = DVec3::new(cos, sin, 0.0);
+        let m = miter(&[DVec3::X, b], name).unwrap();
+        assert!((m.dot(DVec3::X) - 1.0).abs() < 1e-15 && (m.dot(b) - 1.0).abs() < 1e-15);
+        // A knife edge (turning by 170°) is refused, naming the vertex.
+        let t = 170f64.to_radians();
+        let e = miter(
+            &[DVec3::X, DVec3::new(math::cos(t), math::sin(t), 0.0)],
+            name,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("vertex 0") && e.contains("151.04"), "{e}");
+    }
+}

@@ -1,0 +1,306 @@
+//! Offset evaluation (`construct::shell`): a sphere by revolution against the analytic
+//! sphere of radius R − c, continuity across every edge of OpenSubdiv's closed shapes with
+//! extraordinary vertices, and the errors of bad input.
+
+#[path = "support/arc.rs"]
+#[allow(dead_code)] // the arcs are not needed here
+mod arc;
+#[path = "support/osd_shapes.rs"]
+#[allow(dead_code)] // the shape index is not needed here
+mod osd_shapes;
+
+use glam::DVec3;
+use profsubd::construct::shell::{measure, offset_within, OffsetSettings, OffsetSurface, Side};
+use profsubd::eval::Evaluator;
+use profsubd::io::obj::read_obj_file;
+use profsubd::{revolve, Mesh, RevolveInput, Settings, SubdivOptions};
+
+const R: f64 = 2.0;
+
+/// A sphere of radius `R` by revolution of a semicircle (smooth poles).
+fn sphere() -> Mesh {
+    let profile: Vec<[f64; 2]> = arc::semicircle(64)
+        .into_iter()
+        .map(|[r, z]| [R * r, R * z])
+        .collect();
+    let mut input = RevolveInput::new(profile);
+    (input.samples_profile, input.samples_around) = (32, 64);
+    let fitted = revolve::build(&input, &Settings::default()).unwrap();
+    (*fitted.mesh).clone()
+}
+
+fn options(mesh: &Mesh) -> SubdivOptions {
+    mesh.options().resolve()
+}
+
+/// Largest `| |O| − (R − c) |` and `| |S| − R |` over an `n × n` lattice of every face.
+fn sphere_errors(offset: &OffsetSurface, n: usize, c: f64) -> (f64, f64) {
+    let (mut eo, mut es) = (0.0f64, 0.0f64);
+    for f in 0..offset.num_parametric_faces() {
+        for i in 0..=n {
+            for j in 0..=n {
+                let o = offset
+                    .evaluate(f, i as f64 / n as f64, j as f64 / n as f64)
+                    .unwrap();
+                eo = eo.max((o.position.length() - (R - c)).abs());
+                es = es.max((o.surface.position.length() - R).abs());
+            }
+        }
+    }
+    (eo, es)
+}
+
+#[test]
+fn sphere_offset_lies_on_the_smaller_sphere_and_improves_with_level() {
+    let mesh = sphere();
+    let c = 0.05 * R;
+    let mut previous: Option<f64> = None;
+    for level in 0..=3 {
+        let settings = OffsetSettings {
+            level,
+            ..OffsetSettings::new(c)
+        };
+        let offset = OffsetSurface::new(&mesh, &options(&mesh), settings).unwrap();
+        let r = measure(&offset, 3).unwrap();
+        eprintln!(
+            "level {level}: thickness / c min {:.6} max {:.6} mean {:.6}, max |d - c| / c \
+             {:.3e} ({} samples){}",
+            r.min,
+            r.max,
+            r.mean,
+            r.max_error / c,
+            r.samples,
+            previous.map_or(String::new(), |p| format!(", rate {:.2}", p / r.max_error))
+        );
+        // The crust is exact at its corners: the error falls about 4× a level (h²).
+        if let Some(p) = previous {
+            assert!(
+                r.max_error < p / 3.0,
+                "level {level}: {} vs {p}",
+                r.max_error
+            );
+        }
+        previous = Some(r.max_error);
+        // The offset goes inward.
+        let o = offset.evaluate(3, 0.3, 0.6).unwrap();
+        assert!(o.position.length() < o.surface.position.length() - 0.9 * c);
+    }
+    // A tolerance picks the level; O then lies on the sphere of radius R − c up to the
+    // surface's own distance from the sphere of radius R, plus the tolerance.
+    let t = 1e-4 * c;
+    let (offset, report) =
+        offset_within(&mesh, &options(&mesh), OffsetSettings::new(c), t).unwrap();
+    assert!(report.max_error <= t && report.level == 3, "{report:?}");
+    let (eo, es) = sphere_errors(&offset, 4, c);
+    eprintln!(
+        "tolerance {t:.1e}: level {}, max | |O| - (R - c) | = {eo:.3e}, max | |S| - R | = {es:.3e}",
+        report.level
+    );
+    assert!(eo <= es + 2.0 * t, "{eo} {es}");
+    // Outward: the sphere of radius R + c.
+    let settings = OffsetSettings {
+        side: Side::Outward,
+        level: 3,
+        ..OffsetSettings::new(c)
+    };
+    let offset = OffsetSurface::new(&mesh, &options(&mesh), settings).unwrap();
+    let o = offset.evaluate(5, 0.25, 0.5).unwrap();
+    let s = o.surface.position.length();
+    assert!((o.position.length() - s - c).abs() < 1e-4 * c);
+}
+
+/// The Ptex points of side `k` of control face `f` at parameter `t` from vertex `k` to
+/// vertex `k + 1`, with the derivative of `(u, v)` by `t`.
+fn side_point(
+    mesh: &Mesh,
+    first_ptex: u32,
+    f: usize,
+    k: usize,
+    t: f64,
+) -> (u32, f64, f64, [f64; 2]) {
+    let n = mesh.face(f).len();
+    if n == 4 {
+        let (u, v, d) = match k {
+            0 => (t, 0.0, [1.0, 0.0]),
+            1 => (1.0, t, [0.0, 1.0]),
+            2 => (1.0 - t, 1.0, [-1.0, 0.0]),
+            _ => (0.0, 1.0 - t, [0.0, -1.0]),
+        };
+        (first_ptex, u, v, d)
+    } else if t < 0.5 {
+        (first_ptex + k as u32, 2.0 * t, 0.0, [2.0, 0.0])
+    } else {
+        let next = ((k + 1) % n) as u32;
+        (first_ptex + next, 0.0, 2.0 * (1.0 - t), [0.0, -2.0])
+    }
+}
+
+#[test]
+fn offset_is_continuous_across_every_edge_of_closed_shapes() {
+    let Some(dir) = osd_shapes::shapes_dir() else {
+        return;
+    };
+    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
+    let shapes = [
+        dir.join("catmark_cube.obj"),
+        dir.join("catmark_torus.obj"),
+        dir.join("catmark_pyramid.obj"),
+        // Crease rings (shoulder, flat base): the sides meet through the mitered corners.
+        examples.join("profiles/bottle.obj"),
+        // An open surface: its boundary edges have one side only.
+        examples.join("profiles/vase.obj"),
+    ];
+    for path in &shapes {
+        let name = path.file_stem().unwrap().to_string_lossy();
+        // The bottle's flat base has rings narrower than 2% of the diagonal next to its
+        // crease: there the mitered inner offset folds (see corners.rs).
+        let fraction = if name == "bottle" { 0.01 } else { 0.02 };
+        let mesh = read_obj_file(path).unwrap().mesh;
+        let opts = options(&mesh);
+        let diag = mesh.bounding_box_diagonal();
+        let offset =
+            OffsetSurface::new(&mesh, &opts, OffsetSettings::new(fraction * diag)).unwrap();
+        let base = Evaluator::new(&mesh, &opts).unwrap();
+        let ptex = base.ptex_faces();
+        // Each side of each face, keyed by its vertex pair.
+        let mut sides = std::collections::HashMap::new();
+        for f in 0..mesh.num_faces() {
+            let face = mesh.face(f);
+            for k in 0..face.len() {
+                sides
+                    .entry((face[k], face[(k + 1) % face.len()]))
+                    .or_insert((f, k));
+            }
+        }
+        let (mut jump, mut surface_jump, mut checked) = (0.0f64, 0.0f64, 0);
+        let (mut tangent_jump, mut cross) = (0.0f64, 0.0f64);
+        for (&(a, b), &(f, k)) in &sides {
+            let Some(&(g, l)) = sides.get(&(b, a)) else {
+                assert!(name == "vase", "{name}: edge {a}-{b} is a boundary");
+                continue;
+            };
+            for i in 1..8 {
+                let t = i as f64 / 8.0;
+                let (pf, u, v, duv) = side_point(&mesh, ptex.first_of(f), f, k, t);
+                let (qf, s, w, dsw) = side_point(&mesh, ptex.first_of(g), g, l, 1.0 - t);
+                let o1 = offset.evaluate(pf, u, v).unwrap();
+                let o2 = offset.evaluate(qf, s, w).unwrap();
+                jump = jump.max((o1.position - o2.position).length());
+                surface_jump =
+                    surface_jump.max((o1.surface.position - o2.surface.position).length());
+                // The derivative along the edge (by t), from both sides.
+                let along = |o: DVec3, d: DVec3, c: [f64; 2]| o * c[0] + d * c[1];
+                let t1 = along(o1.du, o1.dv, duv);
+                let t2 = -along(o2.du, o2.dv, dsw);
+                let s1 = along(o1.surface.du, o1.surface.dv, duv);
+                let s2 = -along(o2.surface.du, o2.surface.dv, dsw);
+                tangent_jump = tangent_jump.max(((t1 - t2) - (s1 - s2)).length() / s1.length());
+                // Across the edge the crust adds nothing: O's cross derivative is S's.
+                let across = |o: DVec3, d: DVec3, c: [f64; 2]| o * -c[1] + d * c[0];
+                let x = across(o1.du - o1.surface.du, o1.dv - o1.surface.dv, duv);
+                cross = cross.max(x.length() / across(o1.surface.du, o1.surface.dv, duv).length());
+                checked += 1;
+            }
+        }
+        eprintln!(
+            "{name}: {checked} edge points, position jump {:.2e} x diagonal (surface {:.2e}), \
+             tangent derivative jump beyond the surface's {tangent_jump:.2e}, crust cross \
+             derivative {cross:.2e} (relative)",
+            jump / diag,
+            surface_jump / diag
+        );
+        assert!(jump <= 1e-12 * diag, "{name}: {jump}");
+        assert!(tangent_jump <= 1e-10, "{name}: {tangent_jump}");
+        assert!(cross <= 1e-12, "{name}: {cross}");
+        // The offset's surface is the input's exact limit (through the refined mesh).
+        for p in [(0, 0.3, 0.7), (1, 0.5, 0.5), (2, 0.9, 0.1)] {
+            let o = offset.evaluate(p.0, p.1, p.2).unwrap();
+            let s = base.evaluate(p.0, p.1, p.2).unwrap();
+            assert!((o.surface.position - s.position).length() <= 1e-13 * diag);
+            assert!((o.surface.du - s.du).length() <= 1e-11 * s.du.length());
+        }
+    }
+}
+
+#[test]
+fn bad_input_gives_specific_errors() {
+    let mesh = sphere();
+    let opts = options(&mesh);
+    for c in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        let e = OffsetSurface::new(&mesh, &opts, OffsetSettings::new(c))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("thickness") && e.contains("must be a finite number > 0"),
+            "{e}"
+        );
+    }
+    // Beyond the radius of curvature the inward offset folds.
+    let e = OffsetSurface::new(&mesh, &opts, OffsetSettings::new(1.2 * R))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("folds at face") && e.contains("(O_u x O_v) . n <= 0"),
+        "{e}"
+    );
+    let accepted = OffsetSettings {
+        accept_folds: true,
+        ..OffsetSettings::new(1.2 * R)
+    };
+    let folded = OffsetSurface::new(&mesh, &opts, accepted).unwrap();
+    assert!(folded.evaluate(3, 0.5, 0.5).unwrap().folds());
+    // A collapsed control mesh: the ring next to the pole of a profile that stops 1e-16
+    // short of the axis has all its vertices at one point, without normal.
+    let collapsed: Vec<[f64; 2]> = vec![[1e-16, -R], [1.0, -1.5], [R, 0.0], [1.0, 1.5], [0.0, R]];
+    let fitted = revolve::build(&RevolveInput::new(collapsed), &Settings::default()).unwrap();
+    let e = OffsetSurface::new(&fitted.mesh, &opts, OffsetSettings::new(0.1))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("vertex 0 has no normal"), "{e}");
+}
+
+/// The README's thickness table: min / max / mean thickness over c at L = 0 and at the
+/// level a tolerance of 1 % of c chooses, on a sphere, a torus, the bottle, the vase and a
+/// creased cube. `cargo test --release --test shell_offset -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn thickness_table() {
+    let examples = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples");
+    // (name, mesh, thickness over the bounding-box diagonal); the sphere's c = 0.05 R.
+    let sphere = sphere();
+    let f = 0.05 * R / sphere.bounding_box_diagonal();
+    let mut models = vec![("sphere (revolution, R = 2)".to_string(), sphere, f)];
+    if let Some(dir) = osd_shapes::shapes_dir() {
+        let torus = read_obj_file(&dir.join("catmark_torus.obj")).unwrap().mesh;
+        models.push(("catmark_torus".into(), torus, 0.02));
+    }
+    for (name, f) in [
+        ("profiles/bottle.obj", 0.005),
+        ("profiles/vase.obj", 0.01),
+        ("meshes/cube_creased.obj", 0.02),
+        ("meshes/cube_creased.obj", 0.002),
+    ] {
+        models.push((
+            name.into(),
+            read_obj_file(&examples.join(name)).unwrap().mesh,
+            f,
+        ));
+    }
+    for (name, mesh, fraction) in &models {
+        let c = fraction * mesh.bounding_box_diagonal();
+        let opts = options(mesh);
+        let at0 = OffsetSurface::new(mesh, &opts, OffsetSettings::new(c)).unwrap();
+        let r = measure(&at0, 5).unwrap();
+        eprintln!(
+            "| {name} | {c:.4} | L = 0 | {:.4} | {:.4} | {:.4} |",
+            r.min, r.max, r.mean
+        );
+        match offset_within(mesh, &opts, OffsetSettings::new(c), 0.01 * c) {
+            Ok((_, r)) => eprintln!(
+                "| {name} | {c:.4} | t = 1 % c: L = {} | {:.4} | {:.4} | {:.4} |",
+                r.level, r.min, r.max, r.mean
+            ),
+            Err(e) => eprintln!("| {name} | {c:.4} | t = 1 % c | {e} |"),
+        }
+    }
+}

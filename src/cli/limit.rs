@@ -78,7 +78,8 @@ pub fn run(args: &LimitArgs) -> Result<i32> {
                 DomainArg::Bfr => Domain::Bfr,
             };
             let points = read_points(path)?;
-            let ev = Evaluator::new(&mesh, &options)?;
+            let control = super::progress::control("building the evaluator");
+            let ev = Evaluator::with_control(&mesh, &options, &control)?;
             let mut out = Vec::with_capacity(points.len());
             for p in &points {
                 let at = |message: String| Error::Parse {
@@ -104,6 +105,7 @@ pub fn run(args: &LimitArgs) -> Result<i32> {
         require_surface(samples.clone(), "vertex")?;
     }
     let text = format_samples(&samples, args.derivs);
+    super::progress::check_interrupted()?;
     std::io::stdout()
         .lock()
         .write_all(text.as_bytes())

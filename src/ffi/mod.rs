@@ -51,6 +51,7 @@
 #![allow(clippy::missing_safety_doc)]
 
 pub mod construct;
+pub mod control;
 pub mod error;
 pub mod evaluator;
 pub mod fitted;

@@ -162,6 +162,18 @@ impl Settings {
             && (a as u64) * (b as u64) <= MAX_SAMPLE_PRODUCT
     }
 
+    /// The memory budget of [`Settings::control`] against the fit of an `a` × `b` sample
+    /// grid (about `(a + 1)(b + 1)` vertices, estimated as the fit itself does): what a
+    /// construction checks with its sample counts, before it samples anything. Errors:
+    /// [`Error::LimitExceeded`].
+    pub fn check_fit_budget(&self, a: usize, b: usize) -> Result<()> {
+        let vertices = (a + 1).saturating_mul(b + 1);
+        self.control.check_memory(
+            &format!("the fit of {a} × {b} samples"),
+            crate::fit::fit_bytes(vertices, vertices.saturating_mul(4)),
+        )
+    }
+
     /// One sample interval count `n` named `name` must be in `1..=`[`MAX_SAMPLES`] (what
     /// a setter can check before the construction knows the other count).
     pub fn check_sample_count(name: &str, n: u32) -> Result<()> {

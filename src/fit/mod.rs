@@ -58,13 +58,13 @@ pub struct FitReport {
     /// Condition estimate of the fit: how much a relative change of the data points (to
     /// their bounding-box diagonal) can grow relative to the smallest distance between two
     /// neighbouring data points, `κ × diagonal / smallest spacing`, with `κ` the stencil
-    /// matrix's amplification measured on this solve (see [`fit_limit`]). Fits above
+    /// matrix's amplification measured on this solve (the fit computes it). Fits above
     /// [`MAX_CONDITION`] are refused.
     pub condition: f64,
 }
 
 /// Largest accepted [`FitReport::condition`]: above it, the fit's tolerance
-/// ([`RELATIVE_TOLERANCE`] × the diagonal, amplified) would exceed 1 % of the smallest
+/// (1e-10 × the diagonal, amplified) would exceed 1 % of the smallest
 /// spacing between neighbouring data points, so nearly coincident samples could not be told
 /// apart.
 pub const MAX_CONDITION: f64 = 1e-2 / RELATIVE_TOLERANCE;
@@ -515,7 +515,7 @@ pub fn fit_limit(
             spacing / diagonal
         ))
     };
-    if !(geometric <= MAX_CONDITION) {
+    if geometric.is_nan() || geometric > MAX_CONDITION {
         return Err(refuse(geometric));
     }
     let table = limit_stencils_with(mesh, options, &control.stage(0.0, 0.3))?;
@@ -534,7 +534,7 @@ pub fn fit_limit(
         .fold(0.0, f64::max);
     let kappa = (norm * spread(&x) / spread(targets).max(f64::MIN_POSITIVE)).max(1.0);
     report.condition = kappa * geometric;
-    if !(report.condition <= MAX_CONDITION) {
+    if report.condition.is_nan() || report.condition > MAX_CONDITION {
         return Err(refuse(report.condition));
     }
     let mut parts = mesh.parts().clone();

@@ -69,7 +69,7 @@ fn benches(c: &mut Criterion) {
                 OffsetSettings::new(0.002 * big_mesh.bounding_box_diagonal()),
             )
             .unwrap();
-            hollow_solid(&offset).unwrap()
+            hollow_solid(&offset, &profsubd::Control::NONE).unwrap()
         })
     });
     group.finish();

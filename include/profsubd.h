@@ -86,6 +86,15 @@ typedef enum profsubd_status {
      */
     PROFSUBD_ERROR_INVALID_HANDLE = 9,
     /**
+     * The progress callback returned non-zero: the work stopped, outputs are untouched.
+     */
+    PROFSUBD_ERROR_CANCELLED = 10,
+    /**
+     * A size above a documented ceiling, or work whose estimated memory exceeds the budget
+     * set with `profsubd_options_set_memory_budget`, refused before allocating.
+     */
+    PROFSUBD_ERROR_LIMIT_EXCEEDED = 11,
+    /**
      * A bug in profsubd was caught (a Rust panic); the message says where.
      */
     PROFSUBD_ERROR_INTERNAL = 99,
@@ -373,6 +382,13 @@ typedef struct profsubd_stencil_table profsubd_stencil_table;
  * counter-clockwise seen from the side `du x dv` points to.
  */
 typedef struct profsubd_tessellation profsubd_tessellation;
+
+/**
+ * A progress callback: `fraction` of the work done, in `[0, 1]`, non-decreasing within a
+ * call; `user` as given to `profsubd_options_set_progress`. Return 0 to continue, non-zero
+ * to cancel (the call then returns `PROFSUBD_ERROR_CANCELLED`).
+ */
+typedef int (*profsubd_progress_fn)(double fraction, void *user);
 
 /**
  * How densely `profsubd_check_folds` samples (NULL for the defaults 9, 4, 45).
@@ -764,6 +780,34 @@ enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options 
                                                         size_t num_trajectory);
 
 /**
+ * Set the progress callback of the work done with `options`: every construction
+ * (`profsubd_profile_build`, `profsubd_revolve`, `profsubd_sweep`, ...: the fit and its
+ * stages, BiCGSTAB iterations, dense LU columns), `profsubd_evaluator_new` (each face) and
+ * `profsubd_refine_uniform` (each level). It is called on the calling thread at the start,
+ * regularly (at most about a thousand times per stage) and at the end of the work; when it
+ * returns non-zero the call stops within one step and returns `PROFSUBD_ERROR_CANCELLED`,
+ * its outputs untouched and nothing leaked. `callback` NULL removes it. Calls sharing the
+ * options object on several threads call the callback concurrently with the same `user`.
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` / `PROFSUBD_ERROR_INVALID_HANDLE` for `options`.
+ */
+enum profsubd_status profsubd_options_set_progress(struct profsubd_options *options,
+                                                   profsubd_progress_fn callback,
+                                                   void *user);
+
+/**
+ * Set the memory budget of the work done with `options` (constructions, evaluator build,
+ * refinement), in bytes; 0 (the default) for none. A call estimates its largest
+ * allocations from its sizes before making them and returns
+ * `PROFSUBD_ERROR_LIMIT_EXCEEDED` when the estimate is above the budget (the message gives
+ * both figures).
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` / `PROFSUBD_ERROR_INVALID_HANDLE` for `options`.
+ */
+enum profsubd_status profsubd_options_set_memory_budget(struct profsubd_options *options,
+                                                        uint64_t bytes);
+
+/**
  * Build a patch through unorganized 3-D sketch curves (Qin & Wright): `num_boundary` (3 or
  * 4) boundary curves in order around the patch, then `num_interior` interior curves;
  * `curve_sizes` holds the point count of each (`num_boundary + num_interior` entries) and
@@ -791,7 +835,9 @@ enum profsubd_status profsubd_curves(const double *points,
 /**
  * Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
  * The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
- * little more around extraordinary vertices and semi-sharp features.
+ * little more around extraordinary vertices and semi-sharp features. The options' progress
+ * callback and memory budget apply (`profsubd_options_set_progress`,
+ * `_set_memory_budget`): `PROFSUBD_ERROR_CANCELLED`, `PROFSUBD_ERROR_LIMIT_EXCEEDED`.
  */
 enum profsubd_status profsubd_evaluator_new(const struct profsubd_mesh *mesh,
                                             const struct profsubd_options *options,
@@ -955,6 +1001,15 @@ enum profsubd_status profsubd_fitted_get_targets(const struct profsubd_fitted *f
 enum profsubd_status profsubd_fitted_get_fit_residual(const struct profsubd_fitted *fitted,
                                                       double *residual,
                                                       double *tolerance);
+
+/**
+ * The fit's condition estimate (`κ × diagonal / smallest spacing` between neighbouring
+ * data points; see the README, "Reliability"): how much a relative change of the data can
+ * grow relative to the smallest sample spacing. Constructions refuse fits above 1e8
+ * (`PROFSUBD_ERROR_NUMERICAL`, "ill-conditioned fit").
+ */
+enum profsubd_status profsubd_fitted_get_fit_condition(const struct profsubd_fitted *fitted,
+                                                       double *condition);
 
 /**
  * The largest and mean distance from the limit surface to the design surface between the
@@ -1403,7 +1458,8 @@ enum profsubd_status profsubd_options_set_vertex_order(struct profsubd_options *
  *
  * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` (mesh or out NULL), `PROFSUBD_ERROR_INVALID_HANDLE`,
  * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a level above 8 or a refined mesh above 2^26 face
- * indices (a memory bound).
+ * indices (a memory bound); the options' progress callback and memory budget apply
+ * (`PROFSUBD_ERROR_CANCELLED`, `PROFSUBD_ERROR_LIMIT_EXCEEDED`).
  */
 enum profsubd_status profsubd_refine_uniform(const struct profsubd_mesh *mesh,
                                              const struct profsubd_options *options,

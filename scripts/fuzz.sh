@@ -3,7 +3,8 @@
 # entry points that take outside data: fuzz/fuzz_targets/obj_reader.rs (profsubd_mesh_read_obj)
 # and mesh_arrays.rs (profsubd_mesh_new from random arrays); both then check the mesh contract
 # (evaluator build, evaluation at random points inside the control points' bounding box,
-# refinement) in fuzz/src/lib.rs. Smoke run by default (SECONDS_PER_TARGET=20 each); e.g.
+# refinement) in fuzz/src/lib.rs; construction.rs (profile, revolve, sweep from arbitrary JSON,
+# seeds from examples/, the fit's contract checked). Smoke run by default (SECONDS_PER_TARGET=20 each); e.g.
 # SECONDS_PER_TARGET=3600 scripts/fuzz.sh for a long run. Installs the nightly toolchain and
 # cargo-fuzz when missing (a few minutes, once); the first build takes ~8 min on 2 cores.
 # Seed corpus: fuzz/corpus/<target>/seed-* plus OpenSubdiv's shapes (PROFSUBD_OSD_SHAPES)
@@ -18,7 +19,7 @@ cargo fuzz --version >/dev/null 2>&1 || cargo install cargo-fuzz --locked
 CORPUS_DIR="${CORPUS_DIR:-$(mktemp -d)}"
 cd fuzz
 cargo +nightly fuzz build -O --debug-assertions
-for target in obj_reader mesh_arrays; do
+for target in obj_reader mesh_arrays construction; do
     corpus="$CORPUS_DIR/$target"
     mkdir -p "$corpus"
     cp corpus/"$target"/seed-* "$corpus"/

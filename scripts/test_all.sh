@@ -79,10 +79,10 @@ ctest_valgrind() {
     ctest --test-dir "$BUILD_DIR" -L valgrind --output-on-failure -j "$JOBS"
 }
 
-# AddressSanitizer + UBSan over a subset of the C/C++ tests (the C API's bad-input, topology,
+# AddressSanitizer + UBSan over a subset of the C/C++ tests (the C API's bad-input, cancellation, topology,
 # sweep and 16-thread tests; the OpenSubdiv conformance tests are left to the plain and
 # valgrind runs, to keep the run short).
-ASAN_TESTS=(threads bad_input topology conformance_sweep)
+ASAN_TESTS=(threads bad_input topology conformance_sweep cancel)
 ctest_asan() {
     cmake -S . -B "$BUILD_DIR-asan" -DCMAKE_BUILD_TYPE=Release -DPROFSUBD_SANITIZE=ON \
         -DPROFSUBD_CARGO_EXTRA_ARGS=--tests

@@ -43,6 +43,14 @@ pub enum Error {
     /// A numerical procedure did not reach its tolerance (singular system, no convergence).
     #[error("numerical failure: {0}")]
     NumericalFailure(String),
+    /// The caller's progress callback asked to stop ([`crate::control`]); nothing was
+    /// written.
+    #[error("cancelled: {0}")]
+    Cancelled(String),
+    /// A request above a documented size ceiling or the caller's memory budget, refused
+    /// before allocating.
+    #[error("limit exceeded: {0}")]
+    LimitExceeded(String),
 }
 
 impl Error {

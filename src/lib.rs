@@ -97,6 +97,7 @@
 //! - [`tessellate`]: triangles or quads on the limit surface, watertight;
 //! - `fit` (internal): interpolating fit of control points to data points ([`FitReport`],
 //!   [`FitOptions`] re-exported);
+//! - [`control`]: progress, cancellation and the memory budget of long work;
 //! - [`io`]: OBJ with OpenSubdiv tag lines;
 //! - `ffi` (hidden here): the C ABI, documented in `include/profsubd.h`.
 
@@ -106,6 +107,7 @@ pub mod catmark;
 #[doc(hidden)]
 pub mod cli;
 pub mod construct;
+pub mod control;
 pub mod curves;
 pub mod error;
 pub mod eval;
@@ -128,10 +130,11 @@ pub use construct::profile::ProfileInput;
 pub use construct::revolve::RevolveInput;
 pub use construct::sweep::SweepInput;
 pub use construct::{profile, revolve, sweep, Caps, Fitted, Settings};
+pub use control::{Control, Progress};
 pub use curves::Interpolation;
 pub use error::{Error, Result};
 pub use eval::{limit_stencils, Evaluator};
-pub use fit::{FitOptions, FitReport};
+pub use fit::{FitOptions, FitReport, MAX_CONDITION as MAX_FIT_CONDITION};
 pub use glam::DVec3;
 pub use mesh::{Corner, Crease, Mesh, MeshParts};
 pub use options::{

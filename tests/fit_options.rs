@@ -306,7 +306,7 @@ fn semi_sharp_sweeps_and_revolutions_interpolate() {
                 let s = sweep::build(input, &settings).unwrap();
                 let uniform = Settings {
                     crease_method: CreaseMethod::Uniform,
-                    ..settings
+                    ..settings.clone()
                 };
                 let u = sweep::build(input, &uniform).unwrap();
                 assert_eq!(s.mesh.positions(), u.mesh.positions());

@@ -64,6 +64,12 @@ fn header_declares_only_prefixed_names() {
     for line in header.lines() {
         if let Some(rest) = line.strip_prefix("#define ") {
             names.push(rest.split_whitespace().next().unwrap_or(""));
+        } else if let Some(pointer) = line
+            .strip_prefix("typedef ")
+            .and_then(|rest| rest.split_once("(*"))
+        {
+            // A function pointer type: `typedef R (*name)(args);`.
+            names.push(pointer.1.split(')').next().unwrap_or(""));
         } else if let Some(rest) = line.strip_prefix("typedef ") {
             names.push(
                 rest.trim_end_matches(['{', ' '])

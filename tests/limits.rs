@@ -126,3 +126,75 @@ fn an_obj_file_above_the_ceiling_is_refused_without_reading_it() {
     assert_eq!(s, PROFSUBD_ERROR_PARSE);
     assert!(out.is_null() && last_error().contains("limit"));
 }
+
+/// Curve point counts above `MAX_CURVE_POINTS`: refused through Rust and, before the
+/// caller's array is read, through C; and a memory budget on every construction, the
+/// evaluator and the refiner, refused before allocating (the time printed, not asserted).
+#[test]
+fn curve_points_and_the_memory_budget_are_refused_before_allocating() {
+    use profsubd::curves::curve::MAX_CURVE_POINTS;
+    use profsubd::ffi::revolve::profsubd_revolve;
+    use profsubd::{revolve, Control, RevolveInput, Settings};
+
+    let too_many: Vec<[f64; 2]> = (0..=MAX_CURVE_POINTS).map(|i| [1.0, i as f64]).collect();
+    match revolve::build(&RevolveInput::new(too_many), &Settings::default()) {
+        Err(Error::LimitExceeded(m)) => assert!(m.contains("above the limit of 1048576"), "{m}"),
+        other => panic!("{:?}", other.map(|f| f.fit)),
+    }
+    // A 2-point array announced as 2^40 points: refused without reading past it.
+    let two = [1.0, 0.0, 1.0, 1.0];
+    let mut out = ptr::null_mut();
+    let s = unsafe { profsubd_revolve(two.as_ptr(), 1 << 40, ptr::null(), &mut out) };
+    assert_eq!(s, PROFSUBD_ERROR_LIMIT_EXCEEDED);
+    assert!(out.is_null());
+    assert!(
+        last_error().contains("1099511627776 points"),
+        "{}",
+        last_error()
+    );
+
+    // A 1 MiB budget against a 1024 x 1024 revolution (about 170 MB to fit).
+    let mut big = RevolveInput::new(vec![[1.0, 0.0], [1.4, 0.8], [1.3, 2.0], [0.9, 3.0]]);
+    (big.samples_profile, big.samples_around) = (1024, 1024);
+    let settings = Settings {
+        control: Control::NONE.with_memory_budget(Some(1 << 20)),
+        ..Settings::default()
+    };
+    let t = std::time::Instant::now();
+    match revolve::build(&big, &settings) {
+        Err(Error::LimitExceeded(m)) => {
+            assert!(
+                m.contains("the fit of 1024 × 1024 samples needs about"),
+                "{m}"
+            )
+        }
+        other => panic!("{:?}", other.map(|f| f.fit)),
+    }
+    println!("1024 x 1024 revolution refused in {:?}", t.elapsed());
+    // Evaluator and refinement of a 256 x 256 grid under 1 MiB.
+    let mesh = grid(256);
+    let control = Control::NONE.with_memory_budget(Some(1 << 20));
+    let t = std::time::Instant::now();
+    match profsubd::Evaluator::with_control(&mesh, &SubdivOptions::default(), &control) {
+        Err(Error::LimitExceeded(m)) => {
+            assert!(m.contains("the evaluator of a mesh of 65536 faces"), "{m}")
+        }
+        other => panic!("{:?}", other.map(drop)),
+    }
+    let e = t.elapsed();
+    let t = std::time::Instant::now();
+    match profsubd::refine::refine_uniform_with(
+        &mesh,
+        &SubdivOptions::default(),
+        2,
+        profsubd::refine::VertexOrder::VerticesFirst,
+        &control,
+    ) {
+        Err(Error::LimitExceeded(m)) => assert!(m.contains("refining 65536 faces 2 times"), "{m}"),
+        other => panic!("{:?}", other.map(drop)),
+    }
+    println!(
+        "evaluator refused in {e:?}, refinement in {:?}",
+        t.elapsed()
+    );
+}

@@ -80,7 +80,10 @@ pub fn run<I>(
     flags: &FitFlags,
 ) -> Result<i32> {
     flags.apply(&mut settings);
-    write_fitted(&build(&input, &settings)?, out)?;
+    settings.control = super::progress::control("fitting");
+    let fitted = build(&input, &settings)?;
+    super::progress::check_interrupted()?;
+    write_fitted(&fitted, out)?;
     Ok(0)
 }
 

@@ -78,7 +78,8 @@ pub fn run(args: &LimitArgs) -> Result<i32> {
                 DomainArg::Bfr => Domain::Bfr,
             };
             let points = read_points(path)?;
-            let ev = Evaluator::new(&mesh, &options)?;
+            let control = super::progress::control("building the evaluator");
+            let ev = Evaluator::with_control(&mesh, &options, &control)?;
             let mut out = Vec::with_capacity(points.len());
             for p in &points {
                 let at = |message: String| Error::Parse {
@@ -103,6 +104,7 @@ pub fn run(args: &LimitArgs) -> Result<i32> {
     if args.strict && args.at.is_none() {
         require_surface(samples.clone(), "vertex")?;
     }
+    super::progress::check_interrupted()?;
     print_samples(&samples, args.derivs)?;
     Ok(0)
 }

@@ -7,7 +7,8 @@
 //!
 //! Exit codes: 0 success; 1 error (unreadable or invalid input, bad arguments), with the
 //! reason on stderr; subcommands may define more (`check`: 2 for a non-manifold mesh, 3 with
-//! `--surface` for a limit surface that folds).
+//! `--surface` for a limit surface that folds); 130 when Ctrl-C stopped the work (nothing
+//! written; [`progress`]).
 
 pub mod blend;
 pub mod check;
@@ -18,6 +19,7 @@ pub mod curves;
 pub mod limit;
 pub mod offset;
 pub mod profile;
+pub mod progress;
 pub mod refine;
 pub mod revolve;
 pub mod shell;
@@ -45,7 +47,8 @@ use crate::options::{BoundaryInterpolation, CreaseMethod, PartialOptions, Triang
 )]
 #[command(after_help = "Exit codes: 0 success, 1 error (reason on stderr), \
     2 from `check` for a mesh that loads but is not a manifold, \
-    3 from `check --surface` for a limit surface that folds.")]
+    3 from `check --surface` for a limit surface that folds, \
+    130 when Ctrl-C stopped the work (nothing written).")]
 pub struct Cli {
     /// The subcommand to run.
     #[command(subcommand)]
@@ -263,8 +266,13 @@ where
             return if e.use_stderr() { 1 } else { 0 };
         }
     };
+    progress::install_interrupt_handler();
     match dispatch(&cli.command) {
         Ok(code) => code,
+        Err(e @ crate::Error::Cancelled(_)) => {
+            eprintln!("profsubd: {e}");
+            progress::EXIT_INTERRUPTED
+        }
         Err(e) => {
             eprintln!("profsubd: error: {e}");
             1

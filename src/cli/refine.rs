@@ -8,7 +8,7 @@ use clap::Args;
 use super::{read_mesh, SubdivFlags};
 use crate::error::Result;
 use crate::io::obj::write_obj_file;
-use crate::refine::{refine_uniform_ordered, VertexOrder};
+use crate::refine::{refine_uniform_with, VertexOrder};
 
 /// Arguments of `refine`.
 #[derive(Debug, Args)]
@@ -40,7 +40,9 @@ pub fn run(args: &RefineArgs) -> Result<i32> {
     } else {
         VertexOrder::VerticesFirst
     };
-    let refined = refine_uniform_ordered(&mesh, &options, args.level, order)?;
+    let control = super::progress::control("refining");
+    let refined = refine_uniform_with(&mesh, &options, args.level, order, &control)?;
+    super::progress::check_interrupted()?;
     write_obj_file(&refined, &args.output)?;
     println!(
         "wrote {} (level {}: {} vertices, {} faces, {} creases, {} corners, {} holes)",

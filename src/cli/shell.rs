@@ -43,7 +43,8 @@ pub fn run(args: &ShellArgs) -> Result<i32> {
     let mesh = read_mesh(&args.input)?;
     let options = mesh.options().resolve();
     let offset = args.offset.offset(&mesh, &options, args.thickness)?;
-    let fitted = hollow_solid(&offset)?;
+    let fitted = hollow_solid(&offset, &super::progress::control("fitting"))?;
+    super::progress::check_interrupted()?;
     // Tessellate before writing anything, so that a failure writes nothing.
     let stl = match &args.stl {
         Some(path) => {

@@ -92,7 +92,8 @@ pub fn run(args: &TessellateArgs) -> Result<i32> {
     };
     let mesh = read_mesh(&args.input)?;
     let options = args.options.partial().over(mesh.options()).resolve();
-    let ev = Evaluator::new(&mesh, &options)?;
+    let control = super::progress::control("building the evaluator");
+    let ev = Evaluator::with_control(&mesh, &options, &control)?;
     let rate = match (args.tolerance, args.rate) {
         (Some(t), _) => Rate::Tolerance(t),
         (None, n) => Rate::Uniform(n.unwrap_or(4)),
@@ -114,6 +115,7 @@ pub fn run(args: &TessellateArgs) -> Result<i32> {
             t.unmet[0]
         );
     }
+    super::progress::check_interrupted()?;
     write_surface_file(&t, &args.output, format, args.up.into())?;
     let r = t.edge_report();
     println!(

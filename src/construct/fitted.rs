@@ -34,9 +34,15 @@ impl Fitted {
     /// every data point, to 1e-10 × their diagonal. `design` is the design surface on the
     /// faces' lattice.
     ///
+    /// The settings' [`crate::Control`] is polled at every stage (mesh check, stencils,
+    /// each solver iteration) and its memory budget checked before the fit allocates: a
+    /// construction that ends here is cancellable and bounded with no code of its own.
+    ///
     /// Errors: [`crate::Error::InvalidArgument`] for a cage that is not a valid mesh or whose
     /// data points no limit surface reaches (boundary interpolation *none* at an open
-    /// boundary); [`crate::Error::NumericalFailure`] if the fit misses its tolerance.
+    /// boundary); [`crate::Error::NumericalFailure`] if the fit misses its tolerance or is
+    /// ill-conditioned; [`crate::Error::Cancelled`], [`crate::Error::LimitExceeded`] from
+    /// the control.
     pub fn fit(parts: MeshParts, settings: &Settings, design: DesignLattice) -> Result<Fitted> {
         Fitted::fit_free(parts, settings, design, &[])
     }
@@ -52,7 +58,8 @@ impl Fitted {
         design: DesignLattice,
         free: &[bool],
     ) -> Result<Fitted> {
-        let FittedCage { mesh, targets, fit } = fit_cage(parts, settings.fit_options(), free)?;
+        let FittedCage { mesh, targets, fit } =
+            fit_cage(parts, settings.fit_options(), free, &settings.control)?;
         Ok(Fitted {
             mesh: Arc::new(mesh),
             targets,

@@ -11,6 +11,7 @@ use std::path::Path;
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Deserializer};
 
+use crate::control::Control;
 use crate::curves::Interpolation;
 use crate::error::{Error, Result};
 use crate::fit::FitOptions;
@@ -35,7 +36,7 @@ pub enum Caps {
 
 /// The settings shared by every construction. [`Settings::default`] holds the defaults;
 /// [`Settings::check`] the checks.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Settings {
     /// A point where a curve turns by more than this many degrees is a corner, in
@@ -63,6 +64,11 @@ pub struct Settings {
     /// Crease method the mesh is fitted under and tagged with. Default uniform.
     #[serde(default)]
     pub crease_method: CreaseMethod,
+    /// Progress hook, cancellation and memory budget ([`crate::control`]): polled by the
+    /// fit of every construction ([`crate::construct::Fitted::fit`]). Not a JSON key.
+    /// Default: none.
+    #[serde(skip)]
+    pub control: Control,
 }
 
 /// The JSON keys of [`Settings`] (a construction's JSON input splits on them).
@@ -116,6 +122,7 @@ impl Settings {
         caps: Caps::Open,
         boundary: BoundaryInterpolation::EdgeAndCorner,
         crease_method: CreaseMethod::Uniform,
+        control: Control::NONE,
     };
 
     /// The subdivision options the construction is fitted under.
@@ -153,6 +160,18 @@ impl Settings {
         (min_a..=max).contains(&a)
             && (1..=max).contains(&b)
             && (a as u64) * (b as u64) <= MAX_SAMPLE_PRODUCT
+    }
+
+    /// The memory budget of [`Settings::control`] against the fit of an `a` × `b` sample
+    /// grid (about `(a + 1)(b + 1)` vertices, estimated as the fit itself does): what a
+    /// construction checks with its sample counts, before it samples anything. Errors:
+    /// [`Error::LimitExceeded`].
+    pub fn check_fit_budget(&self, a: usize, b: usize) -> Result<()> {
+        let vertices = (a + 1).saturating_mul(b + 1);
+        self.control.check_memory(
+            &format!("the fit of {a} × {b} samples"),
+            crate::fit::fit_bytes(vertices, vertices.saturating_mul(4)),
+        )
     }
 
     /// One sample interval count `n` named `name` must be in `1..=`[`MAX_SAMPLES`] (what

@@ -67,12 +67,17 @@ pub struct CurvePoint {
     pub d2: DVec3,
 }
 
+/// Most points a curve may have (every construction's profile, trajectory and silhouettes):
+/// far more than any sampling uses ([`crate::construct::settings::MAX_SAMPLES`] intervals).
+pub const MAX_CURVE_POINTS: usize = 1 << 20;
+
 impl SpaceCurve {
     /// Build the curve through `points` (a closed curve joins the last point to the first,
     /// which is not repeated).
     ///
     /// `corners` lists point indices where the curve is only C⁰; for an open curve they must be
-    /// interior. Errors ([`Error::InvalidArgument`]): fewer than 2 points (3 when closed), a
+    /// interior. Errors: [`Error::LimitExceeded`] above [`MAX_CURVE_POINTS`] points;
+    /// [`Error::InvalidArgument`]: fewer than 2 points (3 when closed), a
     /// non-finite coordinate, consecutive points that coincide (the last and the first too
     /// when closed), a corner index out of range. `what` names the curve in messages.
     pub fn new(
@@ -104,6 +109,11 @@ impl SpaceCurve {
     ) -> Result<SpaceCurve> {
         let n = points.len();
         let need = if closed { 3 } else { 2 };
+        if n > MAX_CURVE_POINTS {
+            return Err(Error::LimitExceeded(format!(
+                "{what}: {n} points, above the limit of {MAX_CURVE_POINTS}"
+            )));
+        }
         if n < need {
             return Err(named(
                 what,

@@ -31,6 +31,7 @@ use super::patch_topology::Neighbourhood;
 use super::points::PointProgram;
 use super::ptex::PtexFaces;
 use super::sample::LimitSample;
+use crate::control::Control;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
@@ -88,6 +89,19 @@ pub struct Evaluator {
     threads: usize,
 }
 
+/// Estimated bytes of the evaluator of `mesh` (what [`Evaluator::with_control`] checks
+/// against the memory budget): about 1 KiB per parametric face (a bicubic patch of 16
+/// points and its program, and the quadtree's refined leaves near extraordinary vertices)
+/// and 64 bytes per face-vertex index (topology of the base level and the copied mesh).
+pub fn evaluator_bytes(mesh: &Mesh) -> u64 {
+    let ptex: u64 = mesh
+        .face_sizes()
+        .iter()
+        .map(|&n| if n == 4 { 1 } else { u64::from(n) })
+        .sum();
+    1024 * ptex + 64 * mesh.face_indices().len() as u64
+}
+
 /// A fragment refined on demand at evaluation (a [`Node::Deep`]).
 #[derive(Debug, Clone)]
 struct DeepFragment {
@@ -113,14 +127,35 @@ impl Evaluator {
     /// Errors: [`Error::InvalidMesh`] when the mesh has more parametric faces than fit in
     /// `u32`; errors of the refinement of an irregular neighbourhood.
     pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
-        let mut ev = Evaluator::topology(mesh, options)?;
+        Evaluator::with_control(mesh, options, &Control::NONE)
+    }
+
+    /// [`Evaluator::new`] with progress, cancellation and a memory budget: `control` is
+    /// polled at every face of the build (0–95 %) and before the patches are computed, and
+    /// the build is refused before allocating when [`evaluator_bytes`] is above the budget.
+    ///
+    /// Errors: those of [`Evaluator::new`]; [`Error::Cancelled`] and
+    /// [`Error::LimitExceeded`] from `control`.
+    pub fn with_control(
+        mesh: &Mesh,
+        options: &SubdivOptions,
+        control: &Control,
+    ) -> Result<Evaluator> {
+        control.report(0.0)?;
+        control.check_memory(
+            &format!("the evaluator of a mesh of {} faces", mesh.num_faces()),
+            evaluator_bytes(mesh),
+        )?;
+        let mut ev = Evaluator::topology(mesh, options, &control.stage(0.0, 0.95))?;
+        control.report(0.95)?;
         ev.update(mesh.positions());
+        control.report(1.0)?;
         Ok(ev)
     }
 
     /// The structure of the evaluator of `mesh`: quadtrees, patches and deep fragments as
     /// points of the program, no positions yet.
-    fn topology(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
+    fn topology(mesh: &Mesh, options: &SubdivOptions, progress: &Control) -> Result<Evaluator> {
         let ptex = PtexFaces::new(mesh)?;
         let global = Neighbourhood::from_mesh(mesh, options);
         let control: Vec<u32> = (0..mesh.num_vertices() as u32).collect();
@@ -138,7 +173,9 @@ impl Evaluator {
             threads: 0,
         };
         ev.roots.reserve(ev.ptex.len());
+        let nf = mesh.num_faces();
         for (f, &size) in mesh.face_sizes().iter().enumerate() {
+            progress.step(f, nf)?;
             if no_surface[f] {
                 let count = if size == 4 { 1 } else { size };
                 for _ in 0..count {

@@ -36,6 +36,7 @@
 //! first face has a smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are
 //! approximate there.
 
+use crate::control::Control;
 use crate::error::Result;
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
@@ -64,10 +65,21 @@ pub struct VertexLimitStencils {
 /// Errors ([`crate::Error::NumericalFailure`]): a dart's subdivision matrix is degenerate
 /// (not seen with OpenSubdiv's rules).
 pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTable> {
+    limit_stencils_with(mesh, options, &Control::NONE)
+}
+
+/// [`limit_stencils`], reporting to `control` each vertex (the fit's first stage).
+pub(crate) fn limit_stencils_with(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    control: &Control,
+) -> Result<StencilTable> {
     let level = Level::from_mesh_with_options(mesh, options);
     let surface = vertices_with_surface_in(&level);
     let mut table = StencilTable::new();
-    for v in 0..mesh.num_vertices() as u32 {
+    let n = mesh.num_vertices();
+    for v in 0..n as u32 {
+        control.step(v as usize, n)?;
         if !surface[v as usize] {
             table.push_row([]);
             continue;

@@ -12,8 +12,9 @@ use crate::construct::settings::Caps;
 use crate::construct::sweep::frames::FrameKind;
 use crate::construct::sweep::SweepInput;
 use crate::construct::{Fitted, Settings};
+use crate::curves::curve::MAX_CURVE_POINTS;
 use crate::curves::Interpolation;
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::ffi::error::{enum_arg, FfiError, FfiResult};
 use crate::ffi::fitted::{new_fitted_handle, profsubd_fitted};
 use crate::ffi::handle;
@@ -126,6 +127,13 @@ pub unsafe fn tuples<const N: usize>(
     n: usize,
     name: &str,
 ) -> FfiResult<Vec<[f64; N]>> {
+    if n > MAX_CURVE_POINTS {
+        // Before reading (or copying) the caller's array.
+        return Err(Error::LimitExceeded(format!(
+            "{name}: {n} points, above the limit of {MAX_CURVE_POINTS}"
+        ))
+        .into());
+    }
     let len = n
         .checked_mul(N)
         .ok_or_else(|| FfiError::invalid_argument(format!("{name}: {n} points is absurd")))?;

@@ -96,6 +96,22 @@ pub unsafe extern "C" fn profsubd_fitted_get_fit_residual(
     })
 }
 
+/// The fit's condition estimate (`κ × diagonal / smallest spacing` between neighbouring
+/// data points; see the README, "Reliability"): how much a relative change of the data can
+/// grow relative to the smallest sample spacing. Constructions refuse fits above 1e8
+/// (`PROFSUBD_ERROR_NUMERICAL`, "ill-conditioned fit").
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_fitted_get_fit_condition(
+    fitted: *const profsubd_fitted,
+    condition: *mut f64,
+) -> profsubd_status {
+    status_call(|| {
+        let fit = handle::borrow(fitted, "fitted")?.fit;
+        arg_out(condition, "condition")?.write(fit.condition);
+        Ok(())
+    })
+}
+
 /// The largest and mean distance from the limit surface to the design surface between the
 /// data points, over the limit surface's bounding-box diagonal: the limit and the design
 /// surface sampled at the same 5 × 5 parameters per face (the design parameter bilinear

@@ -52,6 +52,7 @@
 
 pub mod blend;
 pub mod construct;
+pub mod control;
 pub mod curves;
 pub mod error;
 pub mod evaluator;

@@ -104,7 +104,7 @@ impl OptionsData {
         Settings {
             boundary: self.subdiv.boundary.unwrap_or(d.boundary),
             crease_method: self.subdiv.crease_method.unwrap_or(d.crease_method),
-            ..self.settings
+            ..self.settings.clone()
         }
     }
 }

@@ -7,7 +7,7 @@ use crate::ffi::options::{options_or_default, profsubd_options, resolve};
 use crate::ffi::panic::status_call;
 use crate::ffi::ptr::arg_out;
 use crate::ffi::status::profsubd_status;
-use crate::refine::{refine_uniform_ordered, VertexOrder};
+use crate::refine::{refine_uniform_with, VertexOrder};
 
 /// Values for `profsubd_options_set_vertex_order` (passed as `int32_t`).
 #[repr(C)]
@@ -55,7 +55,8 @@ pub unsafe extern "C" fn profsubd_options_set_vertex_order(
 ///
 /// Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` (mesh or out NULL), `PROFSUBD_ERROR_INVALID_HANDLE`,
 /// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a level above 8 or a refined mesh above 2^26 face
-/// indices (a memory bound).
+/// indices (a memory bound); the options' progress callback and memory budget apply
+/// (`PROFSUBD_ERROR_CANCELLED`, `PROFSUBD_ERROR_LIMIT_EXCEEDED`).
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_refine_uniform(
     mesh: *const profsubd_mesh,
@@ -67,8 +68,8 @@ pub unsafe extern "C" fn profsubd_refine_uniform(
         let m = mesh_arg(mesh, "mesh")?;
         let out = arg_out(out, "out")?;
         let opts = resolve(options, m)?;
-        let order = options_or_default(options)?.order;
-        let refined = refine_uniform_ordered(m, &opts, level, order)?;
+        let o = options_or_default(options)?;
+        let refined = refine_uniform_with(m, &opts, level, o.order, &o.settings.control)?;
         out.write(new_mesh_handle(refined));
         Ok(())
     })

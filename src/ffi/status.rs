@@ -30,6 +30,11 @@ pub enum profsubd_status {
     PROFSUBD_ERROR_NUMERICAL = 8,
     /// A handle is not a live object of the expected kind (freed, or another kind).
     PROFSUBD_ERROR_INVALID_HANDLE = 9,
+    /// The progress callback returned non-zero: the work stopped, outputs are untouched.
+    PROFSUBD_ERROR_CANCELLED = 10,
+    /// A size above a documented ceiling, or work whose estimated memory exceeds the budget
+    /// set with `profsubd_options_set_memory_budget`, refused before allocating.
+    PROFSUBD_ERROR_LIMIT_EXCEEDED = 11,
     /// A bug in profsubd was caught (a Rust panic); the message says where.
     PROFSUBD_ERROR_INTERNAL = 99,
 }
@@ -37,7 +42,7 @@ pub enum profsubd_status {
 use profsubd_status::*;
 
 /// Every status, in numeric order.
-const ALL: [profsubd_status; 11] = [
+const ALL: [profsubd_status; 13] = [
     PROFSUBD_OK,
     PROFSUBD_ERROR_NULL_ARGUMENT,
     PROFSUBD_ERROR_INVALID_ARGUMENT,
@@ -48,6 +53,8 @@ const ALL: [profsubd_status; 11] = [
     PROFSUBD_ERROR_BUFFER_TOO_SMALL,
     PROFSUBD_ERROR_NUMERICAL,
     PROFSUBD_ERROR_INVALID_HANDLE,
+    PROFSUBD_ERROR_CANCELLED,
+    PROFSUBD_ERROR_LIMIT_EXCEEDED,
     PROFSUBD_ERROR_INTERNAL,
 ];
 
@@ -70,6 +77,8 @@ impl profsubd_status {
             PROFSUBD_ERROR_BUFFER_TOO_SMALL => c"buffer too small",
             PROFSUBD_ERROR_NUMERICAL => c"numerical failure",
             PROFSUBD_ERROR_INVALID_HANDLE => c"invalid handle (freed, or another kind of object)",
+            PROFSUBD_ERROR_CANCELLED => c"cancelled by the progress callback",
+            PROFSUBD_ERROR_LIMIT_EXCEEDED => c"above a size limit or the memory budget",
             PROFSUBD_ERROR_INTERNAL => c"internal error (a bug in profsubd)",
         }
     }
@@ -84,6 +93,8 @@ impl From<&Error> for profsubd_status {
             Error::Io { .. } => PROFSUBD_ERROR_IO,
             Error::Parse { .. } => PROFSUBD_ERROR_PARSE,
             Error::NumericalFailure(_) => PROFSUBD_ERROR_NUMERICAL,
+            Error::Cancelled(_) => PROFSUBD_ERROR_CANCELLED,
+            Error::LimitExceeded(_) => PROFSUBD_ERROR_LIMIT_EXCEEDED,
         }
     }
 }
@@ -96,7 +107,7 @@ mod tests {
 
     #[test]
     fn numbers_are_the_agreed_ones() {
-        let expected = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 99];
+        let expected = [0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 99];
         let got: Vec<i32> = ALL.iter().map(|s| *s as i32).collect();
         assert_eq!(got, expected);
         assert_eq!(std::mem::size_of::<profsubd_status>(), 4);
@@ -124,6 +135,8 @@ mod tests {
                 6,
             ),
             (Error::NumericalFailure("x".into()), 8),
+            (Error::Cancelled("x".into()), 10),
+            (Error::LimitExceeded("x".into()), 11),
         ];
         for (e, code) in cases {
             assert_eq!(profsubd_status::from(&e) as i32, code, "{e}");
@@ -140,7 +153,8 @@ mod tests {
         assert_eq!(s(0), "success");
         assert_eq!(s(7), "buffer too small");
         assert_eq!(s(99), "internal error (a bug in profsubd)");
-        assert_eq!(s(10), "unknown status");
+        assert_eq!(s(10), "cancelled by the progress callback");
+        assert_eq!(s(12), "unknown status");
         assert_eq!(s(-1), "unknown status");
         assert_eq!(s(i32::MIN), "unknown status");
     }

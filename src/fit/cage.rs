@@ -9,6 +9,7 @@
 use glam::DVec3;
 
 use super::{fit_limit, FitReport};
+use crate::control::Control;
 use crate::error::{Error, Result};
 use crate::eval::vertices_with_surface;
 use crate::mesh::{Mesh, MeshParts};
@@ -64,18 +65,34 @@ pub struct FittedCage {
 /// every vertex, with the cage's creases and corners and these options, is its data point
 /// (to [`super::RELATIVE_TOLERANCE`] × their diagonal). The mesh is tagged with `options`.
 ///
+/// `control` is polled at each stage: mesh check 0–5 %, limit check 5–10 %, then
+/// [`fit_limit`].
+///
 /// Errors: those of [`Mesh::from_parts`] and [`fit_limit`]; [`Error::InvalidArgument`] when
 /// boundary interpolation *none* leaves vertices without a limit surface (see
 /// [`check_limit_exists`]).
 ///
 /// `fixed` (empty, or one flag per vertex): vertices that keep their position as control
 /// point instead ([`fit_limit`]); their limit positions become their data points.
-pub fn fit_cage(mut parts: MeshParts, options: FitOptions, fixed: &[bool]) -> Result<FittedCage> {
+pub fn fit_cage(
+    mut parts: MeshParts,
+    options: FitOptions,
+    fixed: &[bool],
+    control: &Control,
+) -> Result<FittedCage> {
+    control.report(0.0)?;
     parts.options = options.tags();
     let cage = Mesh::from_parts(parts)?;
+    control.report(0.05)?;
     let resolved = options.resolve();
     check_limit_exists(&cage, &resolved)?;
-    let (mesh, targets, fit) = fit_limit(&cage, &resolved, cage.positions(), fixed)?;
+    let (mesh, targets, fit) = fit_limit(
+        &cage,
+        &resolved,
+        cage.positions(),
+        fixed,
+        &control.stage(0.1, 1.0),
+    )?;
     Ok(FittedCage { mesh, targets, fit })
 }
 
@@ -162,7 +179,7 @@ mod tests {
             BoundaryInterpolation::EdgeAndCorner,
         ] {
             let options = FitOptions::new(boundary, CreaseMethod::Chaikin);
-            let fitted = fit_cage(grid(4, vec![]), options, &[]).unwrap();
+            let fitted = fit_cage(grid(4, vec![]), options, &[], &Control::NONE).unwrap();
             assert_eq!(fitted.mesh.options(), options.tags());
             assert_eq!(fitted.targets, grid(4, vec![]).positions);
             let limits = crate::eval::limit_stencils(&fitted.mesh, &options.resolve())
@@ -180,7 +197,7 @@ mod tests {
         // Boundary none: the 12 border faces are holes, so the 16 border vertices have no
         // surface; the 9 interior vertices keep the 4 inner faces.
         let none = FitOptions::new(BoundaryInterpolation::None, CreaseMethod::Uniform);
-        let m = message(fit_cage(grid(4, vec![]), none, &[]));
+        let m = message(fit_cage(grid(4, vec![]), none, &[], &Control::NONE));
         assert!(
             m.contains("of 16 vertices (the first: vertex 0 at (0, 0, 0))"),
             "{m}"
@@ -190,11 +207,16 @@ mod tests {
             "{m}"
         );
         // A tagged hole takes the surface from the corner vertex it alone holds.
-        let m = message(fit_cage(grid(4, vec![0]), FitOptions::default(), &[]));
+        let m = message(fit_cage(
+            grid(4, vec![0]),
+            FitOptions::default(),
+            &[],
+            &Control::NONE,
+        ));
         assert!(
             m.contains("of 1 vertex (") && m.contains("all their faces are holes"),
             "{m}"
         );
-        assert!(fit_cage(grid(4, vec![5]), FitOptions::default(), &[]).is_ok());
+        assert!(fit_cage(grid(4, vec![5]), FitOptions::default(), &[], &Control::NONE).is_ok());
     }
 }

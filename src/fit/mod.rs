@@ -21,8 +21,10 @@ pub use cage::{fit_cage, FitOptions, FittedCage};
 
 use glam::DVec3;
 
+use crate::control::Control;
 use crate::error::{Error, Result};
-use crate::eval::{limit_stencils, StencilTable};
+use crate::eval::vertex_limit::limit_stencils_with;
+use crate::eval::StencilTable;
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
 
@@ -53,7 +55,19 @@ pub struct FitReport {
     pub method: SolveMethod,
     /// BiCGSTAB iterations, or LU refinement steps after the first solve.
     pub iterations: usize,
+    /// Condition estimate of the fit: how much a relative change of the data points (to
+    /// their bounding-box diagonal) can grow relative to the smallest distance between two
+    /// neighbouring data points, `κ × diagonal / smallest spacing`, with `κ` the stencil
+    /// matrix's amplification measured on this solve (the fit computes it). Fits above
+    /// [`MAX_CONDITION`] are refused.
+    pub condition: f64,
 }
+
+/// Largest accepted [`FitReport::condition`]: above it, the fit's tolerance
+/// (1e-10 × the diagonal, amplified) would exceed 1 % of the smallest
+/// spacing between neighbouring data points, so nearly coincident samples could not be told
+/// apart.
+pub const MAX_CONDITION: f64 = 1e-2 / RELATIVE_TOLERANCE;
 
 /// The solver that produced a fit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -127,19 +141,30 @@ pub fn residual(a: CsrRef<'_>, x: &[DVec3], d: &[DVec3]) -> f64 {
 /// plain scalar loops in a fixed order (no runtime-dispatched SIMD, no parallel reduction, no
 /// fused multiply-add), so the same bits come out on any x86_64 or aarch64 CPU.
 ///
+/// `control` is polled at every BiCGSTAB iteration (0–60 %) and every LU column (60–100 %);
+/// its memory budget is checked before the dense LU allocates.
+///
 /// Errors: [`Error::InvalidArgument`] for a malformed matrix or mismatched sizes;
 /// [`Error::NumericalFailure`] if `A` is singular, if BiCGSTAB does not converge on a system
-/// larger than [`DENSE_LU_MAX_ROWS`], or if the residual stays above the tolerance.
-pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, FitReport)> {
+/// larger than [`DENSE_LU_MAX_ROWS`], or if the residual stays above the tolerance;
+/// [`Error::Cancelled`] and [`Error::LimitExceeded`] from `control`. The report's
+/// `condition` is left at 1 (see [`fit_limit`]).
+pub fn solve(
+    a: CsrRef<'_>,
+    d: &[DVec3],
+    tolerance: f64,
+    control: &Control,
+) -> Result<(Vec<DVec3>, FitReport)> {
     let n = d.len();
     a.check(n)?;
     if n == 0 {
         return Err(Error::invalid_argument("nothing to fit: no data points"));
     }
-    if let Some((x, iterations)) = krylov(a, d, tolerance) {
+    if let Some((x, iterations)) = krylov(a, d, tolerance, &control.stage(0.0, 0.6))? {
         let r = residual(a, &x, d);
         if r <= tolerance {
             let method = SolveMethod::BiCgStab;
+            control.report(1.0)?;
             return Ok((
                 x,
                 FitReport {
@@ -147,6 +172,7 @@ pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, 
                     tolerance,
                     method,
                     iterations,
+                    condition: 1.0,
                 },
             ));
         }
@@ -157,7 +183,11 @@ pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, 
              the dense LU fallback is limited to {DENSE_LU_MAX_ROWS} rows"
         )));
     }
-    let lu = DenseLu::factor(a).ok_or_else(|| {
+    control.check_memory(
+        &format!("the dense LU of the {n} × {n} stencil matrix"),
+        (n * n * 8) as u64,
+    )?;
+    let lu = DenseLu::factor(a, &control.stage(0.6, 1.0))?.ok_or_else(|| {
         Error::NumericalFailure("the limit stencil matrix is singular".to_string())
     })?;
     let mut x = lu.solve(d);
@@ -181,6 +211,7 @@ pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, 
             "interpolating fit reached residual {r:e}, above the tolerance {tolerance:e}"
         )));
     }
+    control.report(1.0)?;
     Ok((
         x,
         FitReport {
@@ -188,6 +219,7 @@ pub fn solve(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Result<(Vec<DVec3>, 
             tolerance,
             method: SolveMethod::DenseLu,
             iterations: refinements,
+            condition: 1.0,
         },
     ))
 }
@@ -220,8 +252,13 @@ fn dot(u: &[f64], v: &[f64]) -> f64 {
 /// zero start; `None` if it does not converge (or a diagonal entry vanishes, or it breaks
 /// down). Each coordinate stops when its residual's Euclidean norm, which bounds its rows'
 /// residuals, is below a margin of the tolerance (a few more iterations, so that the fit has
-/// margin for other evaluators).
-fn krylov(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Option<(Vec<DVec3>, usize)> {
+/// margin for other evaluators). Each coordinate fills a third of `control`.
+fn krylov(
+    a: CsrRef<'_>,
+    d: &[DVec3],
+    tolerance: f64,
+    control: &Control,
+) -> Result<Option<(Vec<DVec3>, usize)>> {
     let n = d.len();
     let mut diag = vec![0.0; n];
     for (i, di) in diag.iter_mut().enumerate() {
@@ -232,7 +269,7 @@ fn krylov(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Option<(Vec<DVec3>, usi
         }
     }
     if diag.iter().any(|&x| x.abs() < 1e-12) {
-        return None;
+        return Ok(None);
     }
     let inv_diag: Vec<f64> = diag.iter().map(|d| 1.0 / d).collect();
     let stop = KRYLOV_MARGIN * tolerance;
@@ -240,28 +277,44 @@ fn krylov(a: CsrRef<'_>, d: &[DVec3], tolerance: f64) -> Option<(Vec<DVec3>, usi
     let mut iterations = 0;
     for j in [0usize, 1, 2] {
         let b: Vec<f64> = d.iter().map(|p| p[j]).collect();
-        let (x, its) = bicgstab_column(a, &inv_diag, &b, stop)?;
+        let third = control.stage(j as f64 / 3.0, (j + 1) as f64 / 3.0);
+        let Some((x, its)) = bicgstab_column(a, &inv_diag, &b, stop, &third)? else {
+            return Ok(None);
+        };
         iterations = iterations.max(its);
         for (o, x) in out.iter_mut().zip(x) {
             o[j] = x;
         }
     }
-    Some((out, iterations))
+    Ok(Some((out, iterations)))
 }
 
-/// One column of [`krylov`]: `x` with `‖b − A x‖₂ < stop`, and the iteration count.
+/// One column of [`krylov`]: `x` with `‖b − A x‖₂ < stop`, and the iteration count
+/// (`None`: no convergence). Progress is the residual's decrease on a log scale from
+/// `‖b‖` to `stop`, never going back.
 fn bicgstab_column(
     a: CsrRef<'_>,
     inv_diag: &[f64],
     b: &[f64],
     stop: f64,
-) -> Option<(Vec<f64>, usize)> {
+    control: &Control,
+) -> Result<Option<(Vec<f64>, usize)>> {
     let n = b.len();
     let mut x = vec![0.0; n];
     let mut r = b.to_vec();
-    if dot(&r, &r).sqrt() < stop {
-        return Some((x, 0));
+    let start = dot(&r, &r).sqrt();
+    control.report(0.0)?;
+    if start < stop {
+        return Ok(Some((x, 0)));
     }
+    let mut done = 0.0f64;
+    let mut progress = |norm: f64| {
+        let f = crate::math::ln(start / norm) / crate::math::ln(start / stop);
+        if f.is_finite() {
+            done = done.max(f);
+        }
+        control.report(done)
+    };
     let r_hat = r.clone();
     let (mut rho, mut alpha, mut omega) = (1.0, 1.0, 1.0);
     let (mut p, mut v) = (vec![0.0; n], vec![0.0; n]);
@@ -269,7 +322,7 @@ fn bicgstab_column(
     for it in 1..=MAX_KRYLOV_ITERATIONS {
         let rho_next = dot(&r_hat, &r);
         if rho_next == 0.0 || !rho_next.is_finite() {
-            return None;
+            return Ok(None);
         }
         let beta = (rho_next / rho) * (alpha / omega);
         rho = rho_next;
@@ -280,7 +333,7 @@ fn bicgstab_column(
         apply_scalar(a, &y, &mut v);
         let rv = dot(&r_hat, &v);
         if rv == 0.0 || !rv.is_finite() {
-            return None;
+            return Ok(None);
         }
         alpha = rho / rv;
         for i in 0..n {
@@ -288,7 +341,7 @@ fn bicgstab_column(
             s[i] = r[i] - alpha * v[i];
         }
         if dot(&s, &s).sqrt() < stop {
-            return Some((x, it));
+            return Ok(Some((x, it)));
         }
         for i in 0..n {
             z[i] = inv_diag[i] * s[i];
@@ -296,21 +349,23 @@ fn bicgstab_column(
         apply_scalar(a, &z, &mut t);
         let tt = dot(&t, &t);
         if tt == 0.0 || !tt.is_finite() {
-            return None;
+            return Ok(None);
         }
         omega = dot(&t, &s) / tt;
         if omega == 0.0 {
-            return None;
+            return Ok(None);
         }
         for i in 0..n {
             x[i] += omega * z[i];
             r[i] = s[i] - omega * t[i];
         }
-        if dot(&r, &r).sqrt() < stop {
-            return Some((x, it));
+        let norm = dot(&r, &r).sqrt();
+        if norm < stop {
+            return Ok(Some((x, it)));
         }
+        progress(norm)?;
     }
-    None
+    Ok(None)
 }
 
 /// LU factors with partial pivoting of a small dense copy of `A` (row-major), for systems
@@ -324,8 +379,9 @@ struct DenseLu {
 }
 
 impl DenseLu {
-    /// `None` if a pivot column is exactly zero (a singular matrix).
-    fn factor(a: CsrRef<'_>) -> Option<Self> {
+    /// `None` if a pivot column is exactly zero (a singular matrix). Each column is a step
+    /// of `control` (the work per column falls as `(n − k)²`).
+    fn factor(a: CsrRef<'_>, control: &Control) -> Result<Option<Self>> {
         let n = a.rows();
         let mut lu = vec![0.0; n * n];
         for i in 0..n {
@@ -334,7 +390,10 @@ impl DenseLu {
             }
         }
         let mut perm: Vec<usize> = (0..n).collect();
+        let total = (n * n * n) as f64;
         for k in 0..n {
+            let left = (n - k) as f64;
+            control.report(1.0 - left * left * left / total)?;
             // The first row of largest magnitude: ties broken by position, deterministically.
             let mut best = k;
             for i in k + 1..n {
@@ -344,7 +403,7 @@ impl DenseLu {
             }
             let pivot = lu[best * n + k];
             if pivot == 0.0 || !pivot.is_finite() {
-                return None;
+                return Ok(None);
             }
             if best != k {
                 for j in 0..n {
@@ -364,7 +423,7 @@ impl DenseLu {
                 }
             }
         }
-        Some(DenseLu { n, lu, perm })
+        Ok(Some(DenseLu { n, lu, perm }))
     }
 
     /// `A⁻¹ rhs` for points.
@@ -409,15 +468,28 @@ impl<'a> From<&'a StencilTable> for CsrRef<'a> {
 /// Topology and tags are kept. Returns the fitted mesh, every vertex's limit position (the
 /// targets, with the fixed vertices' limits in their place) and the report.
 ///
+/// The report's condition estimate ([`FitReport::condition`]) is `κ × diagonal / spacing`:
+/// `spacing` the smallest distance between the targets of two vertices joined by an edge,
+/// `κ = ‖A‖∞ × max|x − c| / max|d − c|` (`c` the targets' box centre; the limit stencil rows
+/// sum to 1, so centring makes it independent of translation) — the amplification this
+/// solve showed, a lower estimate of the stencil matrix's condition number. Everything in
+/// it is a ratio of lengths, unchanged by translation, rotation and uniform scaling.
+///
+/// `control` is polled while the stencils are built (0–30 %) and while solving (30–100 %),
+/// and its memory budget checked before the stencils are built.
+///
 /// Errors: [`Error::InvalidArgument`] if the target count differs from the vertex count;
 /// [`Error::NumericalFailure`] if the stencil matrix is singular or the tolerance is missed
 /// (a vertex without limit surface has an empty stencil row, so a mesh with one is singular:
-/// [`cage::check_limit_exists`] names such vertices first).
+/// [`cage::check_limit_exists`] names such vertices first), or if the condition estimate is
+/// above [`MAX_CONDITION`] (nearly coincident targets: checked on the spacing before solving,
+/// then with `κ`); [`Error::Cancelled`], [`Error::LimitExceeded`] from `control`.
 pub fn fit_limit(
     mesh: &Mesh,
     options: &SubdivOptions,
     targets: &[DVec3],
     fixed: &[bool],
+    control: &Control,
 ) -> Result<(Mesh, Vec<DVec3>, FitReport)> {
     if targets.len() != mesh.num_vertices() || !(fixed.is_empty() || fixed.len() == targets.len()) {
         return Err(Error::invalid_argument(format!(
@@ -427,7 +499,33 @@ pub fn fit_limit(
             mesh.num_vertices()
         )));
     }
-    let limit = limit_stencils(mesh, options)?;
+    control.check_memory(
+        &format!("the fit of {} vertices", mesh.num_vertices()),
+        fit_bytes(mesh.num_vertices(), mesh.face_indices().len()),
+    )?;
+    let (lo, hi) = targets.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    let diagonal = (hi - lo).length().max(f64::MIN_POSITIVE);
+    let (spacing, pair) = smallest_spacing(mesh, targets);
+    let geometric = diagonal / spacing;
+    let refuse = |condition: f64| {
+        Error::NumericalFailure(format!(
+            "ill-conditioned fit: condition estimate {condition:.3e} above {MAX_CONDITION:e} \
+             (the data points of vertices {} and {} are {spacing:e} apart, {:.3e} of the \
+             model's size): nearly coincident samples or a nearly degenerate profile; \
+             remove repeated points or use fewer samples",
+            pair.0,
+            pair.1,
+            spacing / diagonal
+        ))
+    };
+    if geometric.is_nan() || geometric > MAX_CONDITION {
+        return Err(refuse(geometric));
+    }
+    let limit = limit_stencils_with(mesh, options, &control.stage(0.0, 0.3))?;
+    // A fixed vertex's row is the identity: it keeps its position as control point.
     let is_fixed = |i: usize| fixed.get(i).copied().unwrap_or(false);
     let mut system = StencilTable::new();
     for i in 0..targets.len() {
@@ -441,12 +539,24 @@ pub fn fit_limit(
         }
         system.offsets.push(system.indices.len() as u32);
     }
-    let (lo, hi) = targets.iter().fold(
-        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
-        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
-    );
-    let tolerance = RELATIVE_TOLERANCE * (hi - lo).length().max(f64::MIN_POSITIVE);
-    let (x, report) = solve((&system).into(), targets, tolerance)?;
+    let tolerance = RELATIVE_TOLERANCE * diagonal;
+    let a: CsrRef<'_> = (&system).into();
+    let (x, mut report) = solve(a, targets, tolerance, &control.stage(0.3, 1.0))?;
+    let centre = (lo + hi) * 0.5;
+    let spread = |p: &[DVec3]| p.iter().map(|p| (*p - centre).length()).fold(0.0, f64::max);
+    let norm = (0..a.rows())
+        .map(|i| {
+            a.weights[a.offsets[i] as usize..a.offsets[i + 1] as usize]
+                .iter()
+                .map(|w| w.abs())
+                .sum::<f64>()
+        })
+        .fold(0.0, f64::max);
+    let kappa = (norm * spread(&x) / spread(targets).max(f64::MIN_POSITIVE)).max(1.0);
+    report.condition = kappa * geometric;
+    if report.condition.is_nan() || report.condition > MAX_CONDITION {
+        return Err(refuse(report.condition));
+    }
     let limits = CsrRef::from(&limit).apply(&x);
     let reached = (0..targets.len())
         .map(|i| if is_fixed(i) { limits[i] } else { targets[i] })
@@ -454,6 +564,33 @@ pub fn fit_limit(
     let mut parts = mesh.parts().clone();
     parts.positions = x;
     Ok((Mesh::from_parts(parts)?, reached, report))
+}
+
+/// Estimated bytes a fit of `vertices` vertices and `face_indices` face-vertex indices
+/// allocates before any dense fallback: the refinement level (about 40 bytes per index),
+/// the limit stencils (a row of about 1 + 2 × valence entries of 12 bytes per vertex) and
+/// BiCGSTAB's ten vectors, the fitted mesh and its targets (about 130 bytes per vertex).
+pub fn fit_bytes(vertices: usize, face_indices: usize) -> u64 {
+    64 * face_indices as u64 + 160 * vertices as u64
+}
+
+/// The smallest distance between the targets of two vertices joined by an edge of `mesh`,
+/// and the two vertices (`f64::INFINITY` for a mesh without edges).
+fn smallest_spacing(mesh: &Mesh, targets: &[DVec3]) -> (f64, (u32, u32)) {
+    let mut best = (f64::INFINITY, (0, 0));
+    let mut start = 0;
+    for &size in mesh.face_sizes() {
+        let face = &mesh.face_indices()[start..start + size as usize];
+        for (k, &a) in face.iter().enumerate() {
+            let b = face[(k + 1) % face.len()];
+            let d = (targets[a as usize] - targets[b as usize]).length();
+            if d < best.0 {
+                best = (d, (a.min(b), a.max(b)));
+            }
+        }
+        start += size as usize;
+    }
+    best
 }
 
 #[cfg(test)]
@@ -495,7 +632,7 @@ mod tests {
             })
             .collect();
         let d = a.apply(&truth);
-        let (x, report) = solve(a, &d, 1e-12).unwrap();
+        let (x, report) = solve(a, &d, 1e-12, &Control::NONE).unwrap();
         assert!(report.residual <= 1e-12);
         assert_eq!(report.method, SolveMethod::BiCgStab);
         for (x, t) in x.iter().zip(&truth) {
@@ -515,7 +652,7 @@ mod tests {
             weights: &weights,
         };
         let d = [DVec3::X, DVec3::Y, DVec3::Z];
-        let (x, report) = solve(a, &d, 1e-14).unwrap();
+        let (x, report) = solve(a, &d, 1e-14, &Control::NONE).unwrap();
         assert_eq!(report.method, SolveMethod::DenseLu);
         assert_eq!(x, vec![DVec3::Z * 2.0, DVec3::X, DVec3::Y * 0.5]);
     }
@@ -532,7 +669,7 @@ mod tests {
             indices: &indices,
             weights: &weights,
         };
-        match solve(a, &vec![DVec3::ONE; n], 1e-10) {
+        match solve(a, &vec![DVec3::ONE; n], 1e-10, &Control::NONE) {
             Err(Error::NumericalFailure(m)) => assert!(m.contains("limited to 2048 rows"), "{m}"),
             other => panic!("{other:?}"),
         }
@@ -550,13 +687,13 @@ mod tests {
         };
         let d = [DVec3::ONE, DVec3::ZERO];
         assert!(matches!(
-            solve(a, &d, 1e-10),
+            solve(a, &d, 1e-10, &Control::NONE),
             Err(Error::NumericalFailure(_))
         ));
         let bad = [0u32, 5];
         let b = CsrRef { offsets: &bad, ..a };
         assert!(matches!(
-            solve(b, &d[..1], 1e-10),
+            solve(b, &d[..1], 1e-10, &Control::NONE),
             Err(Error::InvalidArgument(_))
         ));
     }

@@ -22,6 +22,7 @@ pub(crate) use output::{corners_of, creases_of_child};
 pub use primvar::{interpolate, Primvar, SparseStencil};
 pub use step::{refine, Refinement, VertexOrder};
 
+use crate::control::Control;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
@@ -52,14 +53,47 @@ pub fn refine_uniform_ordered(
     level: u32,
     order: VertexOrder,
 ) -> Result<Mesh> {
+    refine_uniform_with(mesh, options, level, order, &Control::NONE)
+}
+
+/// [`refine_uniform_ordered`] with progress, cancellation and a memory budget: `control` is
+/// polled before each level's topology and each level's positions (the work of level `k`
+/// counted as `4^k`), and the refinement refused before allocating when
+/// [`refined_bytes`] is above the budget.
+///
+/// Errors: those of [`refine_uniform`]; [`Error::Cancelled`] and [`Error::LimitExceeded`]
+/// from `control`.
+pub fn refine_uniform_with(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    level: u32,
+    order: VertexOrder,
+    control: &Control,
+) -> Result<Mesh> {
+    control.report(0.0)?;
     check_level(mesh, level)?;
-    refine_base(
+    control.check_memory(
+        &format!("refining {} faces {level} times", mesh.num_faces()),
+        refined_bytes(mesh, level),
+    )?;
+    let refined = refine_base(
         mesh,
         Level::from_mesh_with_options(mesh, options),
         options,
         level,
         order,
-    )
+        control,
+    )?;
+    control.report(1.0)?;
+    Ok(refined)
+}
+
+/// Estimated bytes of refining `mesh` `level` times (what [`refine_uniform_with`] checks
+/// against the memory budget): about 64 bytes per face-vertex index of the refined mesh
+/// (its topology, edges and positions, and the parent level alive beside it).
+pub fn refined_bytes(mesh: &Mesh, level: u32) -> u64 {
+    let indices = mesh.face_indices().len() as f64 * 4f64.powi(level.min(MAX_LEVEL) as i32);
+    (64.0 * indices).min(u64::MAX as f64) as u64
 }
 
 /// Refine `base`, the base level of `mesh`, `level` times.
@@ -69,6 +103,7 @@ fn refine_base(
     options: &SubdivOptions,
     level: u32,
     order: VertexOrder,
+    control: &Control,
 ) -> Result<Mesh> {
     if level == 0 {
         let sharpened = |v: usize| base.vertex_topology(v).is_sharpened(options.boundary);
@@ -79,15 +114,23 @@ fn refine_base(
     }
     let mut current = base;
     let mut positions = mesh.positions().to_vec();
-    for _ in 1..level {
+    // Level k (1-based) costs about 4^k: it is done at (4^(k+1) - 4) / (4^(level+1) - 4).
+    let total = 4f64.powi(level as i32 + 1) - 4.0;
+    let done = |k: u32| (4f64.powi(k as i32 + 1) - 4.0) / total;
+    // Topology takes about half a level's time, positions the other half.
+    let half = |k: u32| (done(k) + done(k + 1)) / 2.0;
+    for k in 1..level {
         let r = refine(&current, order);
+        control.report(half(k - 1))?;
         positions = interpolate(&current, &r, &positions);
         current = r.child;
+        control.report(done(k))?;
     }
     // The last level needs no neighbourhoods (Far's minimal topology): its creases and the
     // vertices Far sharpens from topology are read off the parent (a child vertex has its
     // parent's topology, a child edge its parent's boundary and non-manifold status).
     let r = step::refine_last(&current, order);
+    control.report(half(level - 1))?;
     positions = interpolate(&current, &r, &positions);
     // Only the children of vertices can be sharpened from topology, as their parent was.
     let sharpened = |cv: usize| {

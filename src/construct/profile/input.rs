@@ -107,7 +107,8 @@ impl ProfileInput {
                 self.around, self.along
             )));
         }
-        settings.check()
+        settings.check()?;
+        settings.check_fit_budget(self.along as usize, self.around as usize)
     }
 }
 

@@ -78,6 +78,7 @@ impl RevolveInput {
             )));
         }
         Self::check_angle(self.angle_deg)?;
-        settings.check()
+        settings.check()?;
+        settings.check_fit_budget(np, na)
     }
 }

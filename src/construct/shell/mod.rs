@@ -27,6 +27,7 @@ pub use offset::{OffsetSample, OffsetSettings, OffsetSurface, Side};
 pub use thickness::{measure, offset_within, ThicknessReport};
 
 use crate::construct::{Fitted, Settings};
+use crate::control::Control;
 use crate::error::Result;
 use crate::fit::{fit_cage, FitOptions};
 use crate::mesh::Mesh;
@@ -62,21 +63,28 @@ impl ShellInput {
 
 /// Build the hollow solid of `input`: one closed, consistently oriented quad mesh (two
 /// sheets for a closed input) whose limit passes through the outer wall's limit and the
-/// offset at every vertex. The shared settings do not apply (see the module doc).
+/// offset at every vertex. Of the shared settings only the progress hook and memory budget
+/// (`settings.control`) apply (see the module doc).
 ///
 /// Errors: those of [`OffsetSurface::new`] and [`offset_within`]; those of the fit.
-pub fn build(input: &ShellInput, _settings: &Settings) -> Result<Fitted> {
-    hollow_solid(&input.offset()?.0)
+pub fn build(input: &ShellInput, settings: &Settings) -> Result<Fitted> {
+    hollow_solid(&input.offset()?.0, &settings.control)
 }
 
 /// The fitted hollow solid of `offset` ([`solid::hollow_parts`], fitted under the offset
-/// surface's subdivision options).
+/// surface's subdivision options), polling `control` while fitting.
 ///
-/// Errors: those of the fit.
-pub fn hollow_solid(offset: &OffsetSurface) -> Result<Fitted> {
+/// Errors: those of the fit ([`crate::Error::Cancelled`] and
+/// [`crate::Error::LimitExceeded`] from `control`).
+pub fn hollow_solid(offset: &OffsetSurface, control: &Control) -> Result<Fitted> {
     let (parts, design) = solid::hollow_parts(offset)?;
     let o = offset.fine().options();
-    let fitted = fit_cage(parts, FitOptions::new(o.boundary, o.crease_method), &[])?;
+    let fitted = fit_cage(
+        parts,
+        FitOptions::new(o.boundary, o.crease_method),
+        &[],
+        control,
+    )?;
     Ok(Fitted {
         mesh: Arc::new(fitted.mesh),
         targets: fitted.targets,

@@ -155,6 +155,7 @@ impl SweepInput {
             )));
         }
         settings.check()?;
+        settings.check_fit_budget(np, nt)?;
         if settings.caps != Caps::Open {
             return Err(Error::invalid_argument(
                 "caps = \"flat\": a sweep has no caps (close the profile instead)",

@@ -216,7 +216,7 @@ fn bad_input_gives_a_specific_status_and_no_output() {
         assert!(s.is_null());
         assert_eq!(
             profsubd_sweep(line.as_ptr(), usize::MAX, straight.as_ptr(), 3, o, &mut s),
-            PROFSUBD_ERROR_INVALID_ARGUMENT
+            PROFSUBD_ERROR_LIMIT_EXCEEDED
         );
         // Setters refuse out-of-range values.
         assert_eq!(

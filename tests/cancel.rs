@@ -1,0 +1,174 @@
+//! Progress and cancellation through the Rust API (one [`Control`] for all): every
+//! construction (through `Settings`), the evaluator build and uniform refinement report
+//! fractions from 0 to 1, stop with `Error::Cancelled` at the first callback or at 50 %, and
+//! refuse work above a memory budget with `Error::LimitExceeded`. Also the command line:
+//! SIGINT stops a long construction with exit code 130 and no output file.
+
+use std::path::Path;
+use std::sync::{Arc, Mutex};
+
+use profsubd::io::obj::read_obj_file;
+use profsubd::refine::{refine_uniform_with, VertexOrder};
+use profsubd::{
+    profile, revolve, sweep, Control, Error, Evaluator, Mesh, RevolveInput, Settings,
+    SubdivOptions, SweepInput,
+};
+
+/// The fractions a hook saw; it cancels at the first one `>= cancel_at`.
+fn recording(cancel_at: f64) -> (Control, Arc<Mutex<Vec<f64>>>) {
+    let seen = Arc::new(Mutex::new(Vec::new()));
+    let log = seen.clone();
+    let control = Control::NONE.with_progress(move |f: f64| {
+        log.lock().unwrap().push(f);
+        f >= cancel_at
+    });
+    (control, seen)
+}
+
+type Work = Box<dyn Fn(&Control) -> Result<(), Error>>;
+
+fn example(path: &str) -> String {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join(path)
+        .to_string_lossy()
+        .into_owned()
+}
+
+fn works() -> Vec<(&'static str, Work)> {
+    let mesh: Arc<Mesh> = Arc::new(
+        read_obj_file(Path::new(&example("examples/profiles/vase.obj")))
+            .unwrap()
+            .mesh,
+    );
+    let m2 = mesh.clone();
+    vec![
+        (
+            "profile",
+            Box::new(|c: &Control| {
+                let (input, settings) = profile::default_model();
+                let settings = Settings {
+                    control: c.clone(),
+                    ..settings
+                };
+                profile::build(&input, &settings).map(drop)
+            }),
+        ),
+        (
+            "revolve",
+            Box::new(|c: &Control| {
+                let input = RevolveInput::new(vec![[1.0, 0.0], [1.4, 0.8], [1.3, 2.0], [0.9, 3.0]]);
+                let settings = Settings {
+                    control: c.clone(),
+                    ..Settings::default()
+                };
+                revolve::build(&input, &settings).map(drop)
+            }),
+        ),
+        (
+            "sweep",
+            Box::new(|c: &Control| {
+                let (input, mut settings): (SweepInput, Settings) =
+                    profsubd::construct::settings::read_json(Path::new(&example(
+                        "examples/sweeps/handrail.json",
+                    )))
+                    .unwrap();
+                settings.control = c.clone();
+                sweep::build(&input, &settings).map(drop)
+            }),
+        ),
+        (
+            "evaluator",
+            Box::new(move |c: &Control| {
+                Evaluator::with_control(&mesh, &mesh.options().resolve(), c).map(drop)
+            }),
+        ),
+        (
+            "refine",
+            Box::new(move |c: &Control| {
+                let o: SubdivOptions = m2.options().resolve();
+                refine_uniform_with(&m2, &o, 3, VertexOrder::VerticesFirst, c).map(drop)
+            }),
+        ),
+    ]
+}
+
+#[test]
+fn every_long_call_reports_progress_and_cancels() {
+    for (name, work) in works() {
+        // To the end: from 0 to 1, never decreasing.
+        let (control, seen) = recording(f64::INFINITY);
+        work(&control).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let full = seen.lock().unwrap().clone();
+        assert!(full.len() >= 3, "{name}: {full:?}");
+        assert_eq!((full[0], *full.last().unwrap()), (0.0, 1.0), "{name}");
+        assert!(full.windows(2).all(|w| w[0] <= w[1]), "{name}: {full:?}");
+
+        // At the first callback.
+        let (control, seen) = recording(0.0);
+        match work(&control) {
+            Err(Error::Cancelled(m)) => assert!(m.contains("at 0.0 %"), "{name}: {m}"),
+            other => panic!("{name}: {other:?}"),
+        }
+        assert_eq!(seen.lock().unwrap().len(), 1, "{name}");
+
+        // At 50 %: the call returns at the first report at or past it.
+        let (control, seen) = recording(0.5);
+        assert!(matches!(work(&control), Err(Error::Cancelled(_))), "{name}");
+        let half = seen.lock().unwrap().clone();
+        let last = *half.last().unwrap();
+        assert!((0.5..1.0).contains(&last), "{name}: stopped at {last}");
+        assert_eq!(
+            half[..],
+            full[..half.len()],
+            "{name}: same reports until the stop"
+        );
+        assert!(half.len() < full.len(), "{name}");
+
+        // A 1 KiB budget: refused before the work, with both figures.
+        match work(&Control::NONE.with_memory_budget(Some(1024))) {
+            Err(Error::LimitExceeded(m)) => {
+                assert!(
+                    m.contains("above the memory budget of 1024 bytes"),
+                    "{name}: {m}"
+                )
+            }
+            other => panic!("{name}: {other:?}"),
+        }
+    }
+}
+
+/// SIGINT during a long construction: exit code 130, a message, and no output file.
+#[test]
+fn ctrl_c_stops_the_command_line_cleanly() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("big.json");
+    // About 4 s of fitting on this machine (1024 x 1024 samples).
+    std::fs::write(
+        &input,
+        r#"{"profile": [[1,0],[1.4,0.8],[1.3,2],[0.9,3]], "samples_profile": 1024,
+            "samples_around": 1024}"#,
+    )
+    .unwrap();
+    let output = dir.path().join("big.obj");
+    let child = std::process::Command::new(env!("CARGO_BIN_EXE_profsubd"))
+        .arg("revolve")
+        .arg(&input)
+        .arg("-o")
+        .arg(&output)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Past the handler's installation (the first thing the command does), well before
+    // the fit ends.
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    let kill = std::process::Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(130), "{stderr}");
+    assert!(stderr.contains("cancelled"), "{stderr}");
+    assert!(!output.exists());
+}

@@ -3,8 +3,9 @@
 // Mesh: OpenSubdiv's catmark_car and catmark_bishop refined once by Far and put side by side
 // (10,040 quads: extraordinary vertices, semi-sharp creases, boundaries), or the OBJs given as
 // arguments (each refined once, then merged). Built by cmake, not run by ctest:
-// `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [mesh.obj...]`
-// (`--p2`: the refinement benchmark only).
+// `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [mesh.obj...]`
+// (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
+// each side, untimed, for callgrind).
 //
 // P1: 10^6 random (face, u, v) -> position + du + dv.
 //     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
@@ -146,14 +147,71 @@ void append_shape(profsubd_test::OsdShape &a, const profsubd_test::OsdShape &b) 
     a.corner_sharpness.insert(a.corner_sharpness.end(), b.corner_sharpness.begin(), b.corner_sharpness.end());
 }
 
+// Far's counterpart of the evaluator build: adaptive refinement + PatchTable + PatchMap, with
+// the refined and local points' positions.
+void far_build(const profsubd_test::OsdShape &shape, std::unique_ptr<Far::TopologyRefiner> &adaptive,
+               std::unique_ptr<Far::PatchTable> &table, std::unique_ptr<Far::PatchMap> &pmap,
+               std::vector<profsubd_test::FarPoint> &pp) {
+    adaptive = profsubd_test::build_refiner(shape);
+    Far::PatchTableFactory::Options po;
+    po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+    adaptive->RefineAdaptive(po.GetRefineAdaptiveOptions());
+    table.reset(Far::PatchTableFactory::Create(*adaptive, po));
+    pmap.reset(new Far::PatchMap(*table));
+    int nref = adaptive->GetNumVerticesTotal();
+    pp = profsubd_test::refine_points(*adaptive, shape.positions, table->GetNumLocalPoints());
+    if (table->GetNumLocalPoints() > 0) table->ComputeLocalPointValues(pp.data(), pp.data() + nref);
+}
+
+// Far's counterpart of a position update: refinement + local-point stencils in one table.
+std::unique_ptr<Far::StencilTableReal<double> const> far_update_stencils(const profsubd_test::OsdShape &shape) {
+    Far::PatchTableFactory::Options po;
+    po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+    po.SetPatchPrecision<double>();
+    auto r = profsubd_test::build_refiner(shape);
+    r->RefineAdaptive(po.GetRefineAdaptiveOptions());
+    std::unique_ptr<Far::PatchTable> t(Far::PatchTableFactory::Create(*r, po));
+    Far::StencilTableFactoryReal<double>::Options so;
+    so.generateIntermediateLevels = true;
+    std::unique_ptr<Far::StencilTableReal<double> const> refinement(
+        Far::StencilTableFactoryReal<double>::Create(*r, so));
+    return std::unique_ptr<Far::StencilTableReal<double> const>(
+        Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(*r, refinement.get(),
+                                                                          t->GetLocalPointStencilTable<double>()));
+}
+
+// --build-only: each side's build and one position update, once, untimed: the run to profile
+// with `valgrind --tool=callgrind` (instruction counts, repeatable on a loaded machine).
+void build_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh, const profsubd_options *opts) {
+    profsubd_evaluator *ev = nullptr;
+    if (profsubd_evaluator_new(mesh, opts, &ev) != PROFSUBD_OK)
+        std::fprintf(stderr, "build: %s\n", profsubd_last_error_message());
+    std::unique_ptr<Far::TopologyRefiner> adaptive;
+    std::unique_ptr<Far::PatchTable> table;
+    std::unique_ptr<Far::PatchMap> pmap;
+    std::vector<profsubd_test::FarPoint> pp;
+    far_build(shape, adaptive, table, pmap, pp);
+    if (ev && profsubd_evaluator_update_positions(ev, shape.positions.data(), shape.num_vertices()) != PROFSUBD_OK)
+        std::fprintf(stderr, "update: %s\n", profsubd_last_error_message());
+    auto stencils = far_update_stencils(shape);
+    std::vector<profsubd_test::FarPoint> src(shape.num_vertices()), dst(stencils->GetNumStencils());
+    for (int v = 0; v < shape.num_vertices(); ++v)
+        for (int d = 0; d < 3; ++d) src[v].p[d] = shape.positions[3 * v + d];
+    stencils->UpdateValues(src.data(), dst.data());
+    std::printf("build-only: %zu patch points (Far), %d stencils\n", pp.size(), stencils->GetNumStencils());
+    profsubd_evaluator_free(ev);
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
-    bool p2_only = false;
+    bool p2_only = false, build_only_mode = false;
     std::vector<std::string> paths;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--p2")
             p2_only = true;
+        else if (std::string(argv[i]) == "--build-only")
+            build_only_mode = true;
         else
             paths.push_back(argv[i]);
     }
@@ -180,6 +238,11 @@ int main(int argc, char **argv) {
         return 1;
     }
     profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
+    if (build_only_mode) {
+        build_only(shape, mesh.get(), opts);
+        profsubd_options_free(opts);
+        return 0;
+    }
     double checksum = 0;
 
     // --- P2: uniform refinement to level 3.
@@ -295,17 +358,7 @@ int main(int argc, char **argv) {
     std::unique_ptr<Far::PatchTable> table;
     std::unique_ptr<Far::PatchMap> pmap;
     std::vector<profsubd_test::FarPoint> pp;
-    double t_build_far = best(3, [&] {
-        adaptive = profsubd_test::build_refiner(shape);
-        Far::PatchTableFactory::Options po;
-        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
-        adaptive->RefineAdaptive(po.GetRefineAdaptiveOptions());
-        table.reset(Far::PatchTableFactory::Create(*adaptive, po));
-        pmap.reset(new Far::PatchMap(*table));
-        int nref = adaptive->GetNumVerticesTotal();
-        pp = profsubd_test::refine_points(*adaptive, shape.positions, table->GetNumLocalPoints());
-        if (table->GetNumLocalPoints() > 0) table->ComputeLocalPointValues(pp.data(), pp.data() + nref);
-    });
+    double t_build_far = best(3, [&] { far_build(shape, adaptive, table, pmap, pp); });
     double t_eval_far = best(3, [&] {
         double wp[20], wu[20], wv[20];
         for (int i = 0; i < N; ++i) {
@@ -342,21 +395,7 @@ int main(int argc, char **argv) {
                 std::fprintf(stderr, "update: %s\n", profsubd_last_error_message());
         }));
     }
-    std::unique_ptr<Far::StencilTableReal<double> const> stencils;
-    {
-        Far::PatchTableFactory::Options po;
-        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
-        po.SetPatchPrecision<double>();
-        auto r = profsubd_test::build_refiner(shape);
-        r->RefineAdaptive(po.GetRefineAdaptiveOptions());
-        std::unique_ptr<Far::PatchTable> t(Far::PatchTableFactory::Create(*r, po));
-        Far::StencilTableFactoryReal<double>::Options so;
-        so.generateIntermediateLevels = true;
-        std::unique_ptr<Far::StencilTableReal<double> const> refinement(
-            Far::StencilTableFactoryReal<double>::Create(*r, so));
-        stencils.reset(Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(
-            *r, refinement.get(), t->GetLocalPointStencilTable<double>()));
-    }
+    std::unique_ptr<Far::StencilTableReal<double> const> stencils = far_update_stencils(shape);
     std::vector<profsubd_test::FarPoint> src(nv), dst(stencils->GetNumStencils());
     double t_update_far = 1e300;
     for (int rep = 0; rep < 5; ++rep) {

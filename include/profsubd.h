@@ -819,6 +819,34 @@ enum profsubd_status profsubd_evaluator_evaluate(const struct profsubd_evaluator
                                                  double *dv);
 
 /**
+ * Evaluate per-vertex data of `dim` doubles (a primvar: colours, UVs as vertex data,
+ * displacements) at `n` points `(faces[i], u[i], v[i])` (Ptex domain, as
+ * `profsubd_evaluator_evaluate`): `data` holds `dim * num_vertices` doubles, vertex after
+ * vertex, `num_vertices` the mesh's vertex count; the limit values go into `values` and,
+ * when not NULL, the derivatives with respect to u and v into `du` and `dv` (`dim` doubles
+ * per point each). With `dim` = 3 and the control positions as `data` the result is bit for
+ * bit `profsubd_evaluator_evaluate`'s. Cost: a pass over the evaluator's stored stencils
+ * per three components, then the points; threads as `profsubd_evaluator_set_threads`.
+ *
+ * Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`): `dim` 0, `num_vertices` not the mesh's
+ * vertex count, a non-finite value in `data`, the point errors of
+ * `profsubd_evaluator_evaluate` (message naming the point); `PROFSUBD_ERROR_NULL_ARGUMENT`
+ * for a NULL `evaluator`, or a NULL `data`, `faces`, `u`, `v` or `values` with data to
+ * hold. Nothing is written on error.
+ */
+enum profsubd_status profsubd_evaluator_evaluate_primvar(const struct profsubd_evaluator *evaluator,
+                                                         const double *data,
+                                                         size_t dim,
+                                                         size_t num_vertices,
+                                                         const uint32_t *faces,
+                                                         const double *u,
+                                                         const double *v,
+                                                         size_t n,
+                                                         double *values,
+                                                         double *du,
+                                                         double *dv);
+
+/**
  * Evaluate `n` points `(faces[i], u[i], v[i])` given in `domain` (a `profsubd_domain`
  * value): limit position into `positions` (3 doubles per point), and, when not NULL, the
  * derivatives with respect to the domain's u and v into `du` and `dv` (3 doubles per point

@@ -38,6 +38,8 @@ use crate::refine::step::refine_last;
 use crate::refine::{interpolate, refine, Primvar, VertexOrder};
 use crate::topology::Level;
 
+pub use primvar::PrimvarSamples;
+
 /// Depth to which irregular faces are refined and cached at construction.
 pub const CACHE_DEPTH: u32 = 5;
 
@@ -77,8 +79,8 @@ pub struct Evaluator {
     /// access less per evaluation).
     roots: Vec<Node>,
     nodes: Vec<Node>,
-    /// The leaves, from `patch_points` and the current positions.
-    patches: Vec<BicubicPatch>,
+    /// The leaves and deep fragments under the current positions.
+    values: Values,
     /// Each leaf's control points as points of `program`.
     patch_points: Vec<PatchPoints>,
     deep: Vec<DeepFragment>,
@@ -94,8 +96,14 @@ struct DeepFragment {
     nb: Neighbourhood,
     /// Each vertex as a point of the evaluator's program.
     points: Vec<u32>,
-    /// Each vertex's position under the current positions.
-    positions: Vec<DVec3>,
+}
+
+/// What evaluation reads for one set of control values (the positions, or three components
+/// of a primvar): each leaf's patch and each deep fragment's vertex values.
+#[derive(Debug, Clone, Default)]
+struct Values {
+    patches: Vec<BicubicPatch>,
+    deep: Vec<Vec<DVec3>>,
 }
 
 /// Level `d` of the fragment around a control face that repeats a vertex, refined as a whole
@@ -131,7 +139,7 @@ impl Evaluator {
             ptex,
             roots: Vec::new(),
             nodes: Vec::new(),
-            patches: Vec::new(),
+            values: Values::default(),
             patch_points: Vec::new(),
             deep: Vec::new(),
             program: PointProgram::new(mesh.num_vertices()),
@@ -211,14 +219,22 @@ impl Evaluator {
 
     /// Patches and deep fragments from `positions` (checked).
     fn update(&mut self, positions: &[DVec3]) {
-        let values = self.program.run(positions);
+        self.values = self.values_of(positions);
+    }
+
+    /// Patches and deep fragments' vertex values from the control points' `control`.
+    fn values_of(&self, control: &[DVec3]) -> Values {
+        let values = self.program.run(control);
         let points = &self.patch_points;
-        self.patches = super::parallel::map(points.len(), self.threads, |i| {
+        let patches = super::parallel::map(points.len(), self.threads, |i| {
             points[i].patch(|v| values[v as usize])
         });
-        for d in &mut self.deep {
-            d.positions = d.points.iter().map(|&p| values[p as usize]).collect();
-        }
+        let deep = self
+            .deep
+            .iter()
+            .map(|d| d.points.iter().map(|&p| values[p as usize]).collect())
+            .collect();
+        Values { patches, deep }
     }
 
     /// Set how many threads batches of points ([`Evaluator::evaluate_many`],
@@ -276,11 +292,7 @@ impl Evaluator {
 
     /// A deep node for fragment `nb` whose vertices are `points`.
     fn deep_node(&mut self, nb: Neighbourhood, points: Vec<u32>) -> Node {
-        self.deep.push(DeepFragment {
-            nb,
-            points,
-            positions: Vec::new(),
-        });
+        self.deep.push(DeepFragment { nb, points });
         Node::Deep((self.deep.len() - 1) as u32)
     }
 
@@ -369,6 +381,11 @@ impl Evaluator {
     /// Errors ([`Error::InvalidArgument`]): `face` out of range, `u` or `v` outside `[0, 1]`
     /// or NaN, a hole face, a face without limit surface (boundary interpolation "none").
     pub fn evaluate(&self, face: u32, u: f64, v: f64) -> Result<LimitSample> {
+        self.evaluate_with(&self.values, face, u, v)
+    }
+
+    /// [`Evaluator::evaluate`] under `values` (the positions' or a primvar's).
+    fn evaluate_with(&self, values: &Values, face: u32, u: f64, v: f64) -> Result<LimitSample> {
         let Some(&root) = self.roots.get(face as usize) else {
             return Err(Error::invalid_argument(format!(
                 "face {face} is out of range; the mesh has {} parametric faces",
@@ -384,7 +401,7 @@ impl Evaluator {
         loop {
             match node {
                 Node::Patch(p) => {
-                    let (position, ds, dt) = self.patches[p as usize].evaluate(s, t);
+                    let (position, ds, dt) = values.patches[p as usize].evaluate(s, t);
                     return Ok(LimitSample {
                         position,
                         du: ds * scale,
@@ -397,8 +414,8 @@ impl Evaluator {
                     (s, t, scale) = (cs, ct, scale * 2.0);
                 }
                 Node::Deep(d) => {
-                    let d = &self.deep[d as usize];
-                    return self.evaluate_deep(&d.nb, &d.positions, s, t, scale);
+                    let nb = &self.deep[d as usize].nb;
+                    return self.evaluate_deep(nb, &values.deep[d as usize], s, t, scale);
                 }
                 Node::NoSurface => return Err(self.no_surface_error(face)),
             }
@@ -632,5 +649,6 @@ fn faces_without_surface(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
         .collect()
 }
 
+mod primvar;
 #[cfg(test)]
 mod tests;

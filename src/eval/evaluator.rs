@@ -26,7 +26,7 @@ use glam::DVec3;
 
 use super::bspline::BicubicPatch;
 use super::domain::Domain;
-use super::patch_regular::{regular_patch, regular_patch_points, PatchPoints, NO_POINT};
+use super::patch_regular::{regular_patch, PatchPoints};
 use super::patch_topology::Neighbourhood;
 use super::points::PointProgram;
 use super::ptex::PtexFaces;
@@ -35,9 +35,10 @@ use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
 use crate::refine::step::refine_last;
-use crate::refine::{interpolate, refine, Primvar, VertexOrder};
+use crate::refine::{interpolate, Primvar, VertexOrder};
 use crate::topology::Level;
 
+use build::Builder;
 pub use primvar::PrimvarSamples;
 
 /// Depth to which irregular faces are refined and cached at construction.
@@ -106,14 +107,6 @@ struct Values {
     deep: Vec<Vec<DVec3>>,
 }
 
-/// Level `d` of the fragment around a control face that repeats a vertex, refined as a whole
-/// (see [`Evaluator::build_from_root`]).
-struct RootLevel {
-    level: Level,
-    nb: Neighbourhood,
-    points: Vec<u32>,
-}
-
 impl Evaluator {
     /// Build the evaluator of `mesh` under `options` (the caller's resolved options; the
     /// mesh's own tags are not consulted here).
@@ -121,75 +114,63 @@ impl Evaluator {
     /// Errors: [`Error::InvalidMesh`] when the mesh has more parametric faces than fit in
     /// `u32`; errors of the refinement of an irregular neighbourhood.
     pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
-        let mut ev = Evaluator::topology(mesh, options)?;
+        Evaluator::with_threads(mesh, options, 0)
+    }
+
+    /// [`Evaluator::new`] built on `threads` threads (0: all cores), which it keeps for
+    /// batches of points ([`Evaluator::set_threads`]). The result does not depend on it,
+    /// bit for bit.
+    ///
+    /// Errors: as [`Evaluator::new`].
+    pub fn with_threads(mesh: &Mesh, options: &SubdivOptions, threads: usize) -> Result<Evaluator> {
+        let mut ev = Evaluator::topology(mesh, options, threads)?;
         ev.update(mesh.positions());
         Ok(ev)
     }
 
     /// The structure of the evaluator of `mesh`: quadtrees, patches and deep fragments as
-    /// points of the program, no positions yet.
-    fn topology(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
+    /// points of the program, no positions yet. Contiguous ranges of faces are built on
+    /// `threads` threads and joined in face order: the same evaluator as one thread builds.
+    fn topology(mesh: &Mesh, options: &SubdivOptions, threads: usize) -> Result<Evaluator> {
         let ptex = PtexFaces::new(mesh)?;
         let global = Neighbourhood::from_mesh(mesh, options);
-        let control: Vec<u32> = (0..mesh.num_vertices() as u32).collect();
         let no_surface = faces_without_surface(mesh, options);
-        let mut ev = Evaluator {
-            mesh: mesh.clone(),
-            options: *options,
-            ptex,
-            roots: Vec::new(),
-            nodes: Vec::new(),
-            values: Values::default(),
-            patch_points: Vec::new(),
-            deep: Vec::new(),
-            program: PointProgram::new(mesh.num_vertices()),
-            threads: 0,
-        };
-        ev.roots.reserve(ev.ptex.len());
-        for (f, &size) in mesh.face_sizes().iter().enumerate() {
-            if no_surface[f] {
-                let count = if size == 4 { 1 } else { size };
-                for _ in 0..count {
-                    ev.roots.push(Node::NoSurface);
-                }
-                continue;
-            }
-            let (around, points) = global.around_face(f as u32);
-            if around.has_face_repeating_a_vertex() {
-                let level = around.level(options);
-                let mut levels = vec![RootLevel {
-                    level,
-                    nb: around,
-                    points,
-                }];
-                for k in 0..(if size == 4 { 1 } else { size }) {
-                    let node = if size == 4 {
-                        ev.build_from_root(&mut levels, 0, 0)?
-                    } else {
-                        ev.build_from_root(&mut levels, 1, k)?
-                    };
-                    ev.roots.push(node);
-                }
-            } else if size == 4 {
-                let node = ev.build(&global, &control, f as u32, 0)?;
-                ev.roots.push(node);
-            } else {
-                // A non-quad's sub-faces are its children after one refinement, in corner order.
-                let (refined, refined_points) = ev.refine_recorded(&around, &points);
-                for k in 0..size {
-                    let node = ev.build(&refined, &refined_points, k, 1)?;
-                    ev.roots.push(node);
-                }
-            }
+        let parts = super::parallel::map_ranges(mesh.num_faces(), threads, |faces| {
+            let mut b = Builder::new(options, mesh.num_vertices());
+            b.faces(mesh, &global, &no_surface, faces)?;
+            Ok(b)
+        });
+        let mut parts = parts.into_iter();
+        let mut whole = parts.next().expect("at least one range")?;
+        for part in parts {
+            whole.append(part?);
         }
-        let mut roots: Vec<&mut [u32]> = ev
-            .patch_points
+        let Builder {
+            roots,
+            nodes,
+            mut patch_points,
+            mut deep,
+            mut program,
+            ..
+        } = whole;
+        let mut kept: Vec<&mut [u32]> = patch_points
             .iter_mut()
             .map(|p| &mut p.vertices[..])
             .collect();
-        roots.extend(ev.deep.iter_mut().map(|d| &mut d.points[..]));
-        ev.program.prune(&mut roots);
-        Ok(ev)
+        kept.extend(deep.iter_mut().map(|d| &mut d.points[..]));
+        program.prune(&mut kept);
+        Ok(Evaluator {
+            mesh: mesh.clone(),
+            options: *options,
+            ptex,
+            roots,
+            nodes,
+            values: Values::default(),
+            patch_points,
+            deep,
+            program,
+            threads,
+        })
     }
 
     /// Replace the control points' positions (one per control vertex, in vertex order): the
@@ -273,107 +254,6 @@ impl Evaluator {
     /// Number of parametric faces: the valid range of `face` in [`Evaluator::evaluate`].
     pub fn num_parametric_faces(&self) -> usize {
         self.ptex.len()
-    }
-
-    /// A leaf whose control points are vertices of a fragment whose vertices are `points`.
-    fn leaf(&mut self, p: PatchPoints, points: &[u32]) -> Node {
-        self.patch_points.push(PatchPoints {
-            vertices: p.vertices.map(|v| {
-                if v == NO_POINT {
-                    NO_POINT
-                } else {
-                    points[v as usize]
-                }
-            }),
-            boundary: p.boundary,
-        });
-        Node::Patch((self.patch_points.len() - 1) as u32)
-    }
-
-    /// A deep node for fragment `nb` whose vertices are `points`.
-    fn deep_node(&mut self, nb: Neighbourhood, points: Vec<u32>) -> Node {
-        self.deep.push(DeepFragment { nb, points });
-        Node::Deep((self.deep.len() - 1) as u32)
-    }
-
-    /// One level of refinement of `nb` (whose vertices are `points`), the child's points
-    /// recorded in the program.
-    fn refine_recorded(&mut self, nb: &Neighbourhood, points: &[u32]) -> (Neighbourhood, Vec<u32>) {
-        let level = nb.level(&self.options);
-        let r = refine_last(&level, VertexOrder::VerticesFirst);
-        let child_points = self.program.record(&level, &r, points);
-        (nb.refined(&level, &r), child_points)
-    }
-
-    /// The node for face `f` of `nb` (a fragment holding the faces around `f`, or more; the
-    /// patch test only looks at `f`'s corners, whatever else the fragment holds; its vertices
-    /// are `points`), refined down to [`CACHE_DEPTH`]. The fragment around `f` is cut out
-    /// only when `f` is not regular: most children of a refined face are, and the cut costs
-    /// more than the test.
-    fn build(&mut self, nb: &Neighbourhood, points: &[u32], f: u32, depth: u32) -> Result<Node> {
-        if let Some(p) = regular_patch_points(nb, f, &self.options) {
-            return Ok(self.leaf(p, points));
-        }
-        let (nb, globals) = nb.around_face(f);
-        let points: Vec<u32> = globals.iter().map(|&g| points[g as usize]).collect();
-        if depth >= CACHE_DEPTH {
-            return Ok(self.deep_node(nb, points));
-        }
-        let (refined, refined_points) = self.refine_recorded(&nb, &points);
-        let first = self.nodes.len() as u32;
-        self.nodes.extend([Node::NoSurface; 4]);
-        for q in 0..4u32 {
-            let child = self.build(&refined, &refined_points, q, depth + 1)?;
-            self.nodes[(first + q) as usize] = child;
-        }
-        Ok(Node::Split(first))
-    }
-
-    /// Like [`Evaluator::build`] for face `index` of level `depth` of `levels[0]` (whose
-    /// face 0 is the control face), when that fragment holds a face that repeats a vertex.
-    /// Refining such a face makes two distinct edges join the same two vertices, which a
-    /// re-extracted fragment would merge; so every level is the refinement of the previous
-    /// level as a whole (`levels[d]` = `levels[0]` refined `d` times, computed on first
-    /// use), down to [`DEGENERATE_DEPTH`]. Deeper nodes (or all nodes below the depth where
-    /// the fragment would pass [`DEGENERATE_BUDGET`] faces) are refined level by level like
-    /// the others, which is exact unless the point is within `2^-depth` of a corner next to
-    /// the repeated vertex.
-    fn build_from_root(
-        &mut self,
-        levels: &mut Vec<RootLevel>,
-        depth: u32,
-        index: u32,
-    ) -> Result<Node> {
-        while levels.len() <= depth as usize {
-            let last = &levels[levels.len() - 1];
-            let r = refine(&last.level, VertexOrder::VerticesFirst);
-            let points = self.program.record(&last.level, &r, &last.points);
-            let nb = last.nb.refined(&last.level, &r);
-            levels.push(RootLevel {
-                level: r.child,
-                nb,
-                points,
-            });
-        }
-        let here = &levels[depth as usize];
-        let (nb, globals) = here.nb.around_face(index);
-        let points: Vec<u32> = globals.iter().map(|&g| here.points[g as usize]).collect();
-        if let Some(p) = regular_patch_points(&nb, 0, &self.options) {
-            return Ok(self.leaf(p, &points));
-        }
-        let next_size = here.nb.num_faces() * 4;
-        if depth >= DEGENERATE_DEPTH
-            || (levels.len() <= depth as usize + 1 && next_size > DEGENERATE_BUDGET)
-        {
-            return Ok(self.deep_node(nb, points));
-        }
-        let first = self.nodes.len() as u32;
-        self.nodes.extend([Node::NoSurface; 4]);
-        for q in 0..4u32 {
-            let child = self.build_from_root(levels, depth + 1, index * 4 + q)?;
-            self.nodes[(first + q) as usize] = child;
-        }
-        Ok(Node::Split(first))
     }
 
     /// Limit position and derivatives at `(u, v)` of parametric face `face`.
@@ -649,6 +529,7 @@ fn faces_without_surface(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
         .collect()
 }
 
+mod build;
 mod primvar;
 #[cfg(test)]
 mod tests;

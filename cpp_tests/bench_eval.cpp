@@ -5,7 +5,8 @@
 // arguments (each refined once, then merged). Built by cmake, not run by ctest:
 // `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [mesh.obj...]`
 // (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
-// each side, untimed, for callgrind).
+// each side, untimed, for callgrind), or `bench_eval --scale [--scale-max 6]`: build and update
+// at 10^3..10^5 (10^6) faces.
 //
 // P1: 10^6 random (face, u, v) -> position + du + dv.
 //     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
@@ -44,6 +45,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <thread>
 
@@ -202,18 +204,75 @@ void build_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh,
     profsubd_evaluator_free(ev);
 }
 
+// --scale: build and position update on both sides for meshes of 10^3 to 10^5 faces (10^6
+// with --scale-max 6): catmark_car refined 0..k times by Far, creases and all.
+void scale(int max_exp) {
+    profsubd_test::OsdShape shape;
+    std::string err;
+    if (!profsubd_test::read_osd_shape(profsubd_test::osd_shapes_dir() + "/catmark_car.obj", &shape, &err)) {
+        std::fprintf(stderr, "bench_eval: %s\n", err.c_str());
+        return;
+    }
+    std::printf("scale: catmark_car refined k times by Far (semi-sharp creases), one thread; best of 3 (1 above 10^5 faces)\n");
+    std::printf("%9s %11s %11s %7s %11s %11s %7s %9s\n", "faces", "build ms", "Far ms", "ratio", "update ms",
+                "Far ms", "ratio", "ns/face");
+    while (true) {
+        const int nf = shape.num_faces();
+        if (nf > std::pow(10.0, max_exp) * 1.1) break;
+        profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
+        profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
+        profsubd_options_set_threads(opts, 1);
+        const int reps = nf > 200000 ? 1 : 3;
+        profsubd_evaluator *ev = nullptr;
+        double t_ps = best(reps, [&] {
+            if (ev) profsubd_evaluator_free(ev);
+            profsubd_evaluator_new(mesh.get(), opts, &ev);
+        });
+        std::unique_ptr<Far::TopologyRefiner> adaptive;
+        std::unique_ptr<Far::PatchTable> table;
+        std::unique_ptr<Far::PatchMap> pmap;
+        std::vector<profsubd_test::FarPoint> pp;
+        double t_far = best(reps, [&] { far_build(shape, adaptive, table, pmap, pp); });
+        double t_up = best(reps, [&] {
+            profsubd_evaluator_update_positions(ev, shape.positions.data(), shape.num_vertices());
+        });
+        auto stencils = far_update_stencils(shape);
+        std::vector<profsubd_test::FarPoint> src(shape.num_vertices()), dst(stencils->GetNumStencils());
+        double t_up_far = best(reps, [&] {
+            for (int v = 0; v < shape.num_vertices(); ++v)
+                for (int d = 0; d < 3; ++d) src[v].p[d] = shape.positions[3 * v + d];
+            stencils->UpdateValues(src.data(), dst.data());
+        });
+        std::printf("%9d %11.1f %11.1f %7.2f %11.2f %11.2f %7.2f %9.0f\n", nf, 1e3 * t_ps, 1e3 * t_far, t_ps / t_far,
+                    1e3 * t_up, 1e3 * t_up_far, t_up / t_up_far, 1e9 * t_ps / nf);
+        std::fflush(stdout);
+        profsubd_evaluator_free(ev);
+        profsubd_options_free(opts);
+        shape = refine_once(shape);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
     bool p2_only = false, build_only_mode = false;
+    int scale_max = 0;
     std::vector<std::string> paths;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--p2")
             p2_only = true;
         else if (std::string(argv[i]) == "--build-only")
             build_only_mode = true;
+        else if (std::string(argv[i]) == "--scale")
+            scale_max = std::max(scale_max, 5);
+        else if (std::string(argv[i]) == "--scale-max" && i + 1 < argc)
+            scale_max = std::atoi(argv[++i]);
         else
             paths.push_back(argv[i]);
+    }
+    if (scale_max > 0) {
+        scale(scale_max);
+        return 0;
     }
     if (paths.empty())
         for (const char *name : {"catmark_car", "catmark_bishop"})

@@ -745,7 +745,8 @@ enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options 
 /**
  * Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
  * The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
- * little more around extraordinary vertices and semi-sharp features.
+ * little more around extraordinary vertices and semi-sharp features; on the threads
+ * `profsubd_options_set_threads` sets (default all cores), the result the same for any.
  */
 enum profsubd_status profsubd_evaluator_new(const struct profsubd_mesh *mesh,
                                             const struct profsubd_options *options,
@@ -1293,6 +1294,16 @@ enum profsubd_status profsubd_options_set_boundary(struct profsubd_options *opti
  */
 enum profsubd_status profsubd_options_set_crease_method(struct profsubd_options *options,
                                                         int32_t method);
+
+/**
+ * Set how many threads an evaluator built with these options (`profsubd_evaluator_new`)
+ * uses for its build and its batches of points: 0 (the default) for all cores, 1 for the
+ * calling thread only (`profsubd_evaluator_set_threads` changes it afterwards). Results are
+ * bit for bit the same for every setting.
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `options`.
+ */
+enum profsubd_status profsubd_options_set_threads(struct profsubd_options *options, size_t threads);
 
 /**
  * Set the triangle rule: `PROFSUBD_TRIANGLES_CATMARK` or `PROFSUBD_TRIANGLES_SMOOTH`.

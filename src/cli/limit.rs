@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
 
-use super::{read_mesh, SubdivFlags};
+use super::{read_mesh, SubdivFlags, ThreadsFlag};
 use crate::error::{Error, Result};
 use crate::eval::{limit_vertex_samples, require_surface, Domain, Evaluator, LimitSample};
 
@@ -52,6 +52,9 @@ pub struct LimitArgs {
     /// Subdivision options.
     #[command(flatten)]
     pub options: SubdivFlags,
+    /// Threads.
+    #[command(flatten)]
+    pub threads: ThreadsFlag,
 }
 
 /// `--domain` values.
@@ -78,7 +81,7 @@ pub fn run(args: &LimitArgs) -> Result<i32> {
                 DomainArg::Bfr => Domain::Bfr,
             };
             let points = read_points(path)?;
-            let ev = Evaluator::new(&mesh, &options)?;
+            let ev = Evaluator::with_threads(&mesh, &options, args.threads.threads)?;
             let mut out = Vec::with_capacity(points.len());
             for p in &points {
                 let at = |message: String| Error::Parse {

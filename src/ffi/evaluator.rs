@@ -8,7 +8,7 @@ use crate::eval::{require_surface, Domain, Evaluator, LimitSample};
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::mesh::{mesh_arg, profsubd_mesh};
-use crate::ffi::options::{profsubd_options, resolve};
+use crate::ffi::options::{options_or_default, profsubd_options, resolve};
 use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::{arg_out, arg_slice, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
@@ -42,7 +42,8 @@ pub(crate) unsafe fn evaluator_arg<'a>(p: *const profsubd_evaluator) -> FfiResul
 
 /// Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
 /// The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
-/// little more around extraordinary vertices and semi-sharp features.
+/// little more around extraordinary vertices and semi-sharp features; on the threads
+/// `profsubd_options_set_threads` sets (default all cores), the result the same for any.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_evaluator_new(
     mesh: *const profsubd_mesh,
@@ -53,7 +54,8 @@ pub unsafe extern "C" fn profsubd_evaluator_new(
         let m = mesh_arg(mesh, "mesh")?;
         let out = arg_out(out, "out")?;
         let opts = resolve(options, m)?;
-        let ev = Evaluator::new(m, &opts)?;
+        let threads = options_or_default(options)?.threads;
+        let ev = Evaluator::with_threads(m, &opts, threads)?;
         out.write(handle::into_raw(ev));
         Ok(())
     })

@@ -74,7 +74,7 @@ fn point_mode_prints_what_the_c_api_returns() {
         .collect();
     std::fs::write(&pts, format!("# face u v\n{text}")).unwrap();
     let path = example();
-    let o = profsubd(&[
+    let args = [
         "limit",
         path.to_str().unwrap(),
         "--at",
@@ -82,22 +82,13 @@ fn point_mode_prints_what_the_c_api_returns() {
         "--derivs",
         "--crease",
         "chaikin",
-    ]);
+    ];
+    let o = profsubd(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let got = numbers(&o.stdout);
     // The thread count changes nothing (the default is all cores).
     for threads in ["1", "3"] {
-        let t = profsubd(&[
-            "limit",
-            path.to_str().unwrap(),
-            "--at",
-            pts.to_str().unwrap(),
-            "--derivs",
-            "--crease",
-            "chaikin",
-            "--threads",
-            threads,
-        ]);
+        let t = profsubd(&[&args[..], &["--threads", threads]].concat());
         assert!(t.status.success(), "{}", String::from_utf8_lossy(&t.stderr));
         assert_eq!(t.stdout, o.stdout, "--threads {threads}");
     }

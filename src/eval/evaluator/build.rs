@@ -85,7 +85,7 @@ impl<'a> Builder<'a> {
                     self.roots.push(node);
                 }
             } else if size == 4 {
-                let node = self.build(&global, &control, f as u32, 0)?;
+                let node = self.build(global, &control, f as u32, 0)?;
                 self.roots.push(node);
             } else {
                 // A non-quad's sub-faces are its children after one refinement, in corner order.

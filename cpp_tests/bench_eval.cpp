@@ -3,8 +3,10 @@
 // Mesh: OpenSubdiv's catmark_car and catmark_bishop refined once by Far and put side by side
 // (10,040 quads: extraordinary vertices, semi-sharp creases, boundaries), or the OBJs given as
 // arguments (each refined once, then merged). Built by cmake, not run by ctest:
-// `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [mesh.obj...]`
-// (`--p2`: the refinement benchmark only).
+// `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [mesh.obj...]`
+// (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
+// each side, untimed, for callgrind), or `bench_eval --scale [--scale-max 6]`: build and update
+// at 10^3..10^5 (10^6) faces.
 //
 // P1: 10^6 random (face, u, v) -> position + du + dv.
 //     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
@@ -43,6 +45,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <thread>
 
@@ -146,16 +149,130 @@ void append_shape(profsubd_test::OsdShape &a, const profsubd_test::OsdShape &b) 
     a.corner_sharpness.insert(a.corner_sharpness.end(), b.corner_sharpness.begin(), b.corner_sharpness.end());
 }
 
+// Far's counterpart of the evaluator build: adaptive refinement + PatchTable + PatchMap, with
+// the refined and local points' positions.
+void far_build(const profsubd_test::OsdShape &shape, std::unique_ptr<Far::TopologyRefiner> &adaptive,
+               std::unique_ptr<Far::PatchTable> &table, std::unique_ptr<Far::PatchMap> &pmap,
+               std::vector<profsubd_test::FarPoint> &pp) {
+    adaptive = profsubd_test::build_refiner(shape);
+    Far::PatchTableFactory::Options po;
+    po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+    adaptive->RefineAdaptive(po.GetRefineAdaptiveOptions());
+    table.reset(Far::PatchTableFactory::Create(*adaptive, po));
+    pmap.reset(new Far::PatchMap(*table));
+    int nref = adaptive->GetNumVerticesTotal();
+    pp = profsubd_test::refine_points(*adaptive, shape.positions, table->GetNumLocalPoints());
+    if (table->GetNumLocalPoints() > 0) table->ComputeLocalPointValues(pp.data(), pp.data() + nref);
+}
+
+// Far's counterpart of a position update: refinement + local-point stencils in one table.
+std::unique_ptr<Far::StencilTableReal<double> const> far_update_stencils(const profsubd_test::OsdShape &shape) {
+    Far::PatchTableFactory::Options po;
+    po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+    po.SetPatchPrecision<double>();
+    auto r = profsubd_test::build_refiner(shape);
+    r->RefineAdaptive(po.GetRefineAdaptiveOptions());
+    std::unique_ptr<Far::PatchTable> t(Far::PatchTableFactory::Create(*r, po));
+    Far::StencilTableFactoryReal<double>::Options so;
+    so.generateIntermediateLevels = true;
+    std::unique_ptr<Far::StencilTableReal<double> const> refinement(
+        Far::StencilTableFactoryReal<double>::Create(*r, so));
+    return std::unique_ptr<Far::StencilTableReal<double> const>(
+        Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(*r, refinement.get(),
+                                                                          t->GetLocalPointStencilTable<double>()));
+}
+
+// --build-only: each side's build and one position update, once, untimed: the run to profile
+// with `valgrind --tool=callgrind` (instruction counts, repeatable on a loaded machine).
+void build_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh, const profsubd_options *opts) {
+    profsubd_evaluator *ev = nullptr;
+    if (profsubd_evaluator_new(mesh, opts, &ev) != PROFSUBD_OK)
+        std::fprintf(stderr, "build: %s\n", profsubd_last_error_message());
+    std::unique_ptr<Far::TopologyRefiner> adaptive;
+    std::unique_ptr<Far::PatchTable> table;
+    std::unique_ptr<Far::PatchMap> pmap;
+    std::vector<profsubd_test::FarPoint> pp;
+    far_build(shape, adaptive, table, pmap, pp);
+    if (ev && profsubd_evaluator_update_positions(ev, shape.positions.data(), shape.num_vertices()) != PROFSUBD_OK)
+        std::fprintf(stderr, "update: %s\n", profsubd_last_error_message());
+    auto stencils = far_update_stencils(shape);
+    std::vector<profsubd_test::FarPoint> src(shape.num_vertices()), dst(stencils->GetNumStencils());
+    for (int v = 0; v < shape.num_vertices(); ++v)
+        for (int d = 0; d < 3; ++d) src[v].p[d] = shape.positions[3 * v + d];
+    stencils->UpdateValues(src.data(), dst.data());
+    std::printf("build-only: %zu patch points (Far), %d stencils\n", pp.size(), stencils->GetNumStencils());
+    profsubd_evaluator_free(ev);
+}
+
+// --scale: build and position update on both sides for meshes of 10^3 to 10^5 faces (10^6
+// with --scale-max 6): catmark_car refined 0..k times by Far, creases and all.
+void scale(int max_exp) {
+    profsubd_test::OsdShape shape;
+    std::string err;
+    if (!profsubd_test::read_osd_shape(profsubd_test::osd_shapes_dir() + "/catmark_car.obj", &shape, &err)) {
+        std::fprintf(stderr, "bench_eval: %s\n", err.c_str());
+        return;
+    }
+    std::printf("scale: catmark_car refined k times by Far (semi-sharp creases), one thread; best of 3 (1 above 10^5 faces)\n");
+    std::printf("%9s %11s %11s %7s %11s %11s %7s %9s\n", "faces", "build ms", "Far ms", "ratio", "update ms",
+                "Far ms", "ratio", "ns/face");
+    while (true) {
+        const int nf = shape.num_faces();
+        if (nf > std::pow(10.0, max_exp) * 1.1) break;
+        profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
+        profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
+        profsubd_options_set_threads(opts, 1);
+        const int reps = nf > 200000 ? 1 : 3;
+        profsubd_evaluator *ev = nullptr;
+        double t_ps = best(reps, [&] {
+            if (ev) profsubd_evaluator_free(ev);
+            profsubd_evaluator_new(mesh.get(), opts, &ev);
+        });
+        std::unique_ptr<Far::TopologyRefiner> adaptive;
+        std::unique_ptr<Far::PatchTable> table;
+        std::unique_ptr<Far::PatchMap> pmap;
+        std::vector<profsubd_test::FarPoint> pp;
+        double t_far = best(reps, [&] { far_build(shape, adaptive, table, pmap, pp); });
+        double t_up = best(reps, [&] {
+            profsubd_evaluator_update_positions(ev, shape.positions.data(), shape.num_vertices());
+        });
+        auto stencils = far_update_stencils(shape);
+        std::vector<profsubd_test::FarPoint> src(shape.num_vertices()), dst(stencils->GetNumStencils());
+        double t_up_far = best(reps, [&] {
+            for (int v = 0; v < shape.num_vertices(); ++v)
+                for (int d = 0; d < 3; ++d) src[v].p[d] = shape.positions[3 * v + d];
+            stencils->UpdateValues(src.data(), dst.data());
+        });
+        std::printf("%9d %11.1f %11.1f %7.2f %11.2f %11.2f %7.2f %9.0f\n", nf, 1e3 * t_ps, 1e3 * t_far, t_ps / t_far,
+                    1e3 * t_up, 1e3 * t_up_far, t_up / t_up_far, 1e9 * t_ps / nf);
+        std::fflush(stdout);
+        profsubd_evaluator_free(ev);
+        profsubd_options_free(opts);
+        shape = refine_once(shape);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
-    bool p2_only = false;
+    bool p2_only = false, build_only_mode = false;
+    int scale_max = 0;
     std::vector<std::string> paths;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--p2")
             p2_only = true;
+        else if (std::string(argv[i]) == "--build-only")
+            build_only_mode = true;
+        else if (std::string(argv[i]) == "--scale")
+            scale_max = std::max(scale_max, 5);
+        else if (std::string(argv[i]) == "--scale-max" && i + 1 < argc)
+            scale_max = std::atoi(argv[++i]);
         else
             paths.push_back(argv[i]);
+    }
+    if (scale_max > 0) {
+        scale(scale_max);
+        return 0;
     }
     if (paths.empty())
         for (const char *name : {"catmark_car", "catmark_bishop"})
@@ -180,6 +297,11 @@ int main(int argc, char **argv) {
         return 1;
     }
     profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
+    if (build_only_mode) {
+        build_only(shape, mesh.get(), opts);
+        profsubd_options_free(opts);
+        return 0;
+    }
     double checksum = 0;
 
     // --- P2: uniform refinement to level 3.
@@ -231,10 +353,14 @@ int main(int argc, char **argv) {
 
     // --- P1: profsubd.
     profsubd_evaluator *ev = nullptr;
-    double t_build_ps = best(3, [&] {
+    auto build_ps = [&] {
         if (ev) profsubd_evaluator_free(ev);
         profsubd_evaluator_new(mesh.get(), opts, &ev);
-    });
+    };
+    profsubd_options_set_threads(opts, 0);
+    double t_build_ps_all = best(3, build_ps);
+    profsubd_options_set_threads(opts, 1);
+    double t_build_ps = best(3, build_ps);
     auto eval_ps = [&] {
         profsubd_status st = profsubd_evaluator_evaluate(ev, faces.data(), us.data(), vs.data(), N, P.data(),
                                                          DU.data(), DV.data());
@@ -295,17 +421,7 @@ int main(int argc, char **argv) {
     std::unique_ptr<Far::PatchTable> table;
     std::unique_ptr<Far::PatchMap> pmap;
     std::vector<profsubd_test::FarPoint> pp;
-    double t_build_far = best(3, [&] {
-        adaptive = profsubd_test::build_refiner(shape);
-        Far::PatchTableFactory::Options po;
-        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
-        adaptive->RefineAdaptive(po.GetRefineAdaptiveOptions());
-        table.reset(Far::PatchTableFactory::Create(*adaptive, po));
-        pmap.reset(new Far::PatchMap(*table));
-        int nref = adaptive->GetNumVerticesTotal();
-        pp = profsubd_test::refine_points(*adaptive, shape.positions, table->GetNumLocalPoints());
-        if (table->GetNumLocalPoints() > 0) table->ComputeLocalPointValues(pp.data(), pp.data() + nref);
-    });
+    double t_build_far = best(3, [&] { far_build(shape, adaptive, table, pmap, pp); });
     double t_eval_far = best(3, [&] {
         double wp[20], wu[20], wv[20];
         for (int i = 0; i < N; ++i) {
@@ -342,21 +458,7 @@ int main(int argc, char **argv) {
                 std::fprintf(stderr, "update: %s\n", profsubd_last_error_message());
         }));
     }
-    std::unique_ptr<Far::StencilTableReal<double> const> stencils;
-    {
-        Far::PatchTableFactory::Options po;
-        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
-        po.SetPatchPrecision<double>();
-        auto r = profsubd_test::build_refiner(shape);
-        r->RefineAdaptive(po.GetRefineAdaptiveOptions());
-        std::unique_ptr<Far::PatchTable> t(Far::PatchTableFactory::Create(*r, po));
-        Far::StencilTableFactoryReal<double>::Options so;
-        so.generateIntermediateLevels = true;
-        std::unique_ptr<Far::StencilTableReal<double> const> refinement(
-            Far::StencilTableFactoryReal<double>::Create(*r, so));
-        stencils.reset(Far::StencilTableFactoryReal<double>::AppendLocalPointStencilTable(
-            *r, refinement.get(), t->GetLocalPointStencilTable<double>()));
-    }
+    std::unique_ptr<Far::StencilTableReal<double> const> stencils = far_update_stencils(shape);
     std::vector<profsubd_test::FarPoint> src(nv), dst(stencils->GetNumStencils());
     double t_update_far = 1e300;
     for (int rep = 0; rep < 5; ++rep) {
@@ -387,6 +489,9 @@ int main(int argc, char **argv) {
     std::printf("\nAll cores (%u): profsubd evaluate %8.1f ms, speed-up %.2f over one thread, results %s\n",
                 std::thread::hardware_concurrency(), 1e3 * t_eval_ps_all, t_eval_ps / t_eval_ps_all,
                 same_all ? "bit-identical" : "DIFFERENT");
+    std::printf("All cores (%u): profsubd build %8.1f ms, speed-up %.2f over one thread; ratio to Far (one thread) %.3f\n",
+                std::thread::hardware_concurrency(), 1e3 * t_build_ps_all, t_build_ps / t_build_ps_all,
+                t_build_ps_all / t_build_far);
     std::printf("\nPosition update, same topology (best of 5, alternating two position sets)\n");
     std::printf("  profsubd_evaluator_update_positions:       %8.2f ms\n", 1e3 * t_update_ps);
     std::printf("  Far refinement + local-point stencils:     %8.2f ms  (%d stencils, double)\n", 1e3 * t_update_far,

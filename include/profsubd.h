@@ -835,8 +835,9 @@ enum profsubd_status profsubd_curves(const double *points,
 /**
  * Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
  * The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
- * little more around extraordinary vertices and semi-sharp features. The options' progress
- * callback and memory budget apply (`profsubd_options_set_progress`,
+ * little more around extraordinary vertices and semi-sharp features; on the threads
+ * `profsubd_options_set_threads` sets (default all cores), the result the same for any. The
+ * options' progress callback and memory budget apply (`profsubd_options_set_progress`,
  * `_set_memory_budget`): `PROFSUBD_ERROR_CANCELLED`, `PROFSUBD_ERROR_LIMIT_EXCEEDED`.
  */
 enum profsubd_status profsubd_evaluator_new(const struct profsubd_mesh *mesh,
@@ -909,6 +910,34 @@ enum profsubd_status profsubd_evaluator_evaluate(const struct profsubd_evaluator
                                                  double *positions,
                                                  double *du,
                                                  double *dv);
+
+/**
+ * Evaluate per-vertex data of `dim` doubles (a primvar: colours, UVs as vertex data,
+ * displacements) at `n` points `(faces[i], u[i], v[i])` (Ptex domain, as
+ * `profsubd_evaluator_evaluate`): `data` holds `dim * num_vertices` doubles, vertex after
+ * vertex, `num_vertices` the mesh's vertex count; the limit values go into `values` and,
+ * when not NULL, the derivatives with respect to u and v into `du` and `dv` (`dim` doubles
+ * per point each). With `dim` = 3 and the control positions as `data` the result is bit for
+ * bit `profsubd_evaluator_evaluate`'s. Cost: a pass over the evaluator's stored stencils
+ * per three components, then the points; threads as `profsubd_evaluator_set_threads`.
+ *
+ * Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`): `dim` 0, `num_vertices` not the mesh's
+ * vertex count, a non-finite value in `data`, the point errors of
+ * `profsubd_evaluator_evaluate` (message naming the point); `PROFSUBD_ERROR_NULL_ARGUMENT`
+ * for a NULL `evaluator`, or a NULL `data`, `faces`, `u`, `v` or `values` with data to
+ * hold. Nothing is written on error.
+ */
+enum profsubd_status profsubd_evaluator_evaluate_primvar(const struct profsubd_evaluator *evaluator,
+                                                         const double *data,
+                                                         size_t dim,
+                                                         size_t num_vertices,
+                                                         const uint32_t *faces,
+                                                         const double *u,
+                                                         const double *v,
+                                                         size_t n,
+                                                         double *values,
+                                                         double *du,
+                                                         double *dv);
 
 /**
  * Evaluate `n` points `(faces[i], u[i], v[i])` given in `domain` (a `profsubd_domain`
@@ -1366,6 +1395,16 @@ enum profsubd_status profsubd_options_set_boundary(struct profsubd_options *opti
  */
 enum profsubd_status profsubd_options_set_crease_method(struct profsubd_options *options,
                                                         int32_t method);
+
+/**
+ * Set how many threads an evaluator built with these options (`profsubd_evaluator_new`)
+ * uses for its build and its batches of points: 0 (the default) for all cores, 1 for the
+ * calling thread only (`profsubd_evaluator_set_threads` changes it afterwards). Results are
+ * bit for bit the same for every setting.
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `options`.
+ */
+enum profsubd_status profsubd_options_set_threads(struct profsubd_options *options, size_t threads);
 
 /**
  * Set the triangle rule: `PROFSUBD_TRIANGLES_CATMARK` or `PROFSUBD_TRIANGLES_SMOOTH`.

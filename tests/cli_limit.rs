@@ -74,7 +74,7 @@ fn point_mode_prints_what_the_c_api_returns() {
         .collect();
     std::fs::write(&pts, format!("# face u v\n{text}")).unwrap();
     let path = example();
-    let o = profsubd(&[
+    let args = [
         "limit",
         path.to_str().unwrap(),
         "--at",
@@ -82,9 +82,16 @@ fn point_mode_prints_what_the_c_api_returns() {
         "--derivs",
         "--crease",
         "chaikin",
-    ]);
+    ];
+    let o = profsubd(&args);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let got = numbers(&o.stdout);
+    // The thread count changes nothing (the default is all cores).
+    for threads in ["1", "3"] {
+        let t = profsubd(&[&args[..], &["--threads", threads]].concat());
+        assert!(t.status.success(), "{}", String::from_utf8_lossy(&t.stderr));
+        assert_eq!(t.stdout, o.stdout, "--threads {threads}");
+    }
 
     let n = points.len();
     let faces: Vec<u32> = points.iter().map(|p| p.0).collect();
@@ -103,6 +110,15 @@ fn point_mode_prints_what_the_c_api_returns() {
         profsubd::ffi::options::profsubd_options_set_crease_method(
             opts,
             profsubd::ffi::options::profsubd_crease_method::PROFSUBD_CREASE_CHAIKIN as i32,
+        );
+        // Built on one thread here, on all cores by the command above.
+        assert_eq!(
+            profsubd::ffi::options::profsubd_options_set_threads(opts, 1),
+            profsubd_status::PROFSUBD_OK
+        );
+        assert_eq!(
+            profsubd::ffi::options::profsubd_options_set_threads(null_mut(), 1),
+            profsubd_status::PROFSUBD_ERROR_NULL_ARGUMENT
         );
         let mut ev = null_mut();
         assert_eq!(

@@ -143,3 +143,22 @@ fn bad_positions_are_refused_and_leave_the_evaluator_unchanged() {
         assert_eq!(fingerprint(&ev), before);
     }
 }
+
+#[test]
+fn the_build_on_several_threads_is_the_build_on_one() {
+    let Some(dir) = osd_shapes::shapes_dir() else {
+        return;
+    };
+    // The car refined once (6,300 quads with semi-sharp creases): ranges of faces for up to
+    // six threads.
+    let car = read_obj_file(&dir.join("catmark_car.obj")).unwrap().mesh;
+    let options = car.options().resolve();
+    let mesh = profsubd::refine::refine_uniform(&car, &options, 1).unwrap();
+    let one = Evaluator::with_threads(&mesh, &options, 1).unwrap();
+    let want = fingerprint(&one);
+    for threads in [2, 3, 7] {
+        let many = Evaluator::with_threads(&mesh, &options, threads).unwrap();
+        assert_eq!(many.num_points(), one.num_points(), "{threads} threads");
+        assert_eq!(fingerprint(&many), want, "{threads} threads");
+    }
+}

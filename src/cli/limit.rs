@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 
 use clap::{Args, ValueEnum};
 
-use super::{read_mesh, SubdivFlags};
+use super::{read_mesh, SubdivFlags, ThreadsFlag};
 use crate::error::{Error, Result};
 use crate::eval::{limit_vertex_samples, require_surface, Domain, Evaluator, LimitSample};
 
@@ -52,6 +52,9 @@ pub struct LimitArgs {
     /// Subdivision options.
     #[command(flatten)]
     pub options: SubdivFlags,
+    /// Threads.
+    #[command(flatten)]
+    pub threads: ThreadsFlag,
 }
 
 /// `--domain` values.
@@ -79,7 +82,7 @@ pub fn run(args: &LimitArgs) -> Result<i32> {
             };
             let points = read_points(path)?;
             let control = super::progress::control("building the evaluator");
-            let ev = Evaluator::with_control(&mesh, &options, &control)?;
+            let ev = Evaluator::build_on(&mesh, &options, args.threads.threads, &control)?;
             let mut out = Vec::with_capacity(points.len());
             for p in &points {
                 let at = |message: String| Error::Parse {

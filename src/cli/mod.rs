@@ -217,6 +217,15 @@ impl SubdivFlags {
     }
 }
 
+/// `--threads`, for the commands that build an evaluator.
+#[derive(Debug, Clone, Default, Args)]
+pub struct ThreadsFlag {
+    /// Threads for building the evaluator and evaluating batches of points, 0 for all
+    /// cores; results are the same for any count.
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub threads: usize,
+}
+
 /// `--boundary` values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum BoundaryArg {

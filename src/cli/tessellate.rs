@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use clap::{Args, ValueEnum};
 
-use super::{read_mesh, SubdivFlags};
+use super::{read_mesh, SubdivFlags, ThreadsFlag};
 use crate::error::Result;
 use crate::eval::Evaluator;
 use crate::io::surface::{write_surface_file, SurfaceFormat};
@@ -45,6 +45,9 @@ pub struct TessellateArgs {
     /// Subdivision options.
     #[command(flatten)]
     pub options: SubdivFlags,
+    /// Threads.
+    #[command(flatten)]
+    pub threads: ThreadsFlag,
 }
 
 /// `--up` values.
@@ -93,7 +96,7 @@ pub fn run(args: &TessellateArgs) -> Result<i32> {
     let mesh = read_mesh(&args.input)?;
     let options = args.options.partial().over(mesh.options()).resolve();
     let control = super::progress::control("building the evaluator");
-    let ev = Evaluator::with_control(&mesh, &options, &control)?;
+    let ev = Evaluator::build_on(&mesh, &options, args.threads.threads, &control)?;
     let rate = match (args.tolerance, args.rate) {
         (Some(t), _) => Rate::Tolerance(t),
         (None, n) => Rate::Uniform(n.unwrap_or(4)),

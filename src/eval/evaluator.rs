@@ -23,10 +23,11 @@
 //! while evaluating and `Sync`, so many threads may evaluate at once.
 
 use glam::DVec3;
+use std::sync::atomic::AtomicBool;
 
 use super::bspline::BicubicPatch;
 use super::domain::Domain;
-use super::patch_regular::{regular_patch, regular_patch_points, PatchPoints, NO_POINT};
+use super::patch_regular::{regular_patch, PatchPoints};
 use super::patch_topology::Neighbourhood;
 use super::points::PointProgram;
 use super::ptex::PtexFaces;
@@ -36,8 +37,11 @@ use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
 use crate::refine::step::refine_last;
-use crate::refine::{interpolate, refine, Primvar, VertexOrder};
+use crate::refine::{interpolate, Primvar, VertexOrder};
 use crate::topology::Level;
+
+use build::Builder;
+pub use primvar::PrimvarSamples;
 
 /// Depth to which irregular faces are refined and cached at construction.
 pub const CACHE_DEPTH: u32 = 5;
@@ -78,8 +82,8 @@ pub struct Evaluator {
     /// access less per evaluation).
     roots: Vec<Node>,
     nodes: Vec<Node>,
-    /// The leaves, from `patch_points` and the current positions.
-    patches: Vec<BicubicPatch>,
+    /// The leaves and deep fragments under the current positions.
+    values: Values,
     /// Each leaf's control points as points of `program`.
     patch_points: Vec<PatchPoints>,
     deep: Vec<DeepFragment>,
@@ -108,16 +112,14 @@ struct DeepFragment {
     nb: Neighbourhood,
     /// Each vertex as a point of the evaluator's program.
     points: Vec<u32>,
-    /// Each vertex's position under the current positions.
-    positions: Vec<DVec3>,
 }
 
-/// Level `d` of the fragment around a control face that repeats a vertex, refined as a whole
-/// (see [`Evaluator::build_from_root`]).
-struct RootLevel {
-    level: Level,
-    nb: Neighbourhood,
-    points: Vec<u32>,
+/// What evaluation reads for one set of control values (the positions, or three components
+/// of a primvar): each leaf's patch and each deep fragment's vertex values.
+#[derive(Debug, Clone, Default)]
+struct Values {
+    patches: Vec<BicubicPatch>,
+    deep: Vec<Vec<DVec3>>,
 }
 
 impl Evaluator {
@@ -127,7 +129,16 @@ impl Evaluator {
     /// Errors: [`Error::InvalidMesh`] when the mesh has more parametric faces than fit in
     /// `u32`; errors of the refinement of an irregular neighbourhood.
     pub fn new(mesh: &Mesh, options: &SubdivOptions) -> Result<Evaluator> {
-        Evaluator::with_control(mesh, options, &Control::NONE)
+        Evaluator::build_on(mesh, options, 0, &Control::NONE)
+    }
+
+    /// [`Evaluator::new`] built on `threads` threads (0: all cores), which it keeps for
+    /// batches of points ([`Evaluator::set_threads`]). The result does not depend on it,
+    /// bit for bit.
+    ///
+    /// Errors: as [`Evaluator::new`].
+    pub fn with_threads(mesh: &Mesh, options: &SubdivOptions, threads: usize) -> Result<Evaluator> {
+        Evaluator::build_on(mesh, options, threads, &Control::NONE)
     }
 
     /// [`Evaluator::new`] with progress, cancellation and a memory budget: `control` is
@@ -141,12 +152,24 @@ impl Evaluator {
         options: &SubdivOptions,
         control: &Control,
     ) -> Result<Evaluator> {
+        Evaluator::build_on(mesh, options, 0, control)
+    }
+
+    /// [`Evaluator::with_threads`] and [`Evaluator::with_control`] at once.
+    ///
+    /// Errors: those of [`Evaluator::with_control`].
+    pub fn build_on(
+        mesh: &Mesh,
+        options: &SubdivOptions,
+        threads: usize,
+        control: &Control,
+    ) -> Result<Evaluator> {
         control.report(0.0)?;
         control.check_memory(
             &format!("the evaluator of a mesh of {} faces", mesh.num_faces()),
             evaluator_bytes(mesh),
         )?;
-        let mut ev = Evaluator::topology(mesh, options, &control.stage(0.0, 0.95))?;
+        let mut ev = Evaluator::topology(mesh, options, threads, &control.stage(0.0, 0.95))?;
         control.report(0.95)?;
         ev.update(mesh.positions());
         control.report(1.0)?;
@@ -154,71 +177,57 @@ impl Evaluator {
     }
 
     /// The structure of the evaluator of `mesh`: quadtrees, patches and deep fragments as
-    /// points of the program, no positions yet.
-    fn topology(mesh: &Mesh, options: &SubdivOptions, progress: &Control) -> Result<Evaluator> {
+    /// points of the program, no positions yet. Contiguous ranges of faces are built on
+    /// `threads` threads and joined in face order: the same evaluator as one thread builds.
+    /// The first range reports to `progress` (its fraction stands for the whole: the ranges
+    /// are equal); a cancel there stops the other ranges at their next face.
+    fn topology(
+        mesh: &Mesh,
+        options: &SubdivOptions,
+        threads: usize,
+        progress: &Control,
+    ) -> Result<Evaluator> {
         let ptex = PtexFaces::new(mesh)?;
         let global = Neighbourhood::from_mesh(mesh, options);
-        let control: Vec<u32> = (0..mesh.num_vertices() as u32).collect();
         let no_surface = faces_without_surface(mesh, options);
-        let mut ev = Evaluator {
-            mesh: mesh.clone(),
-            options: *options,
-            ptex,
-            roots: Vec::new(),
-            nodes: Vec::new(),
-            patches: Vec::new(),
-            patch_points: Vec::new(),
-            deep: Vec::new(),
-            program: PointProgram::new(mesh.num_vertices()),
-            threads: 0,
-        };
-        ev.roots.reserve(ev.ptex.len());
-        let nf = mesh.num_faces();
-        for (f, &size) in mesh.face_sizes().iter().enumerate() {
-            progress.step(f, nf)?;
-            if no_surface[f] {
-                let count = if size == 4 { 1 } else { size };
-                for _ in 0..count {
-                    ev.roots.push(Node::NoSurface);
-                }
-                continue;
-            }
-            let (around, points) = global.around_face(f as u32);
-            if around.has_face_repeating_a_vertex() {
-                let level = around.level(options);
-                let mut levels = vec![RootLevel {
-                    level,
-                    nb: around,
-                    points,
-                }];
-                for k in 0..(if size == 4 { 1 } else { size }) {
-                    let node = if size == 4 {
-                        ev.build_from_root(&mut levels, 0, 0)?
-                    } else {
-                        ev.build_from_root(&mut levels, 1, k)?
-                    };
-                    ev.roots.push(node);
-                }
-            } else if size == 4 {
-                let node = ev.build(&global, &control, f as u32, 0)?;
-                ev.roots.push(node);
-            } else {
-                // A non-quad's sub-faces are its children after one refinement, in corner order.
-                let (refined, refined_points) = ev.refine_recorded(&around, &points);
-                for k in 0..size {
-                    let node = ev.build(&refined, &refined_points, k, 1)?;
-                    ev.roots.push(node);
-                }
-            }
+        let cancelled = AtomicBool::new(false);
+        let parts = super::parallel::map_ranges(mesh.num_faces(), threads, |faces| {
+            let mut b = Builder::new(options, mesh.num_vertices());
+            let reporter = (faces.start == 0).then_some(progress);
+            b.faces(mesh, &global, &no_surface, faces, reporter, &cancelled)?;
+            Ok(b)
+        });
+        let mut parts = parts.into_iter();
+        let mut whole = parts.next().expect("at least one range")?;
+        for part in parts {
+            whole.append(part?);
         }
-        let mut roots: Vec<&mut [u32]> = ev
-            .patch_points
+        let Builder {
+            roots,
+            nodes,
+            mut patch_points,
+            mut deep,
+            mut program,
+            ..
+        } = whole;
+        let mut kept: Vec<&mut [u32]> = patch_points
             .iter_mut()
             .map(|p| &mut p.vertices[..])
             .collect();
-        roots.extend(ev.deep.iter_mut().map(|d| &mut d.points[..]));
-        ev.program.prune(&mut roots);
-        Ok(ev)
+        kept.extend(deep.iter_mut().map(|d| &mut d.points[..]));
+        program.prune(&mut kept);
+        Ok(Evaluator {
+            mesh: mesh.clone(),
+            options: *options,
+            ptex,
+            roots,
+            nodes,
+            values: Values::default(),
+            patch_points,
+            deep,
+            program,
+            threads,
+        })
     }
 
     /// Replace the control points' positions (one per control vertex, in vertex order): the
@@ -248,14 +257,22 @@ impl Evaluator {
 
     /// Patches and deep fragments from `positions` (checked).
     fn update(&mut self, positions: &[DVec3]) {
-        let values = self.program.run(positions);
+        self.values = self.values_of(positions);
+    }
+
+    /// Patches and deep fragments' vertex values from the control points' `control`.
+    fn values_of(&self, control: &[DVec3]) -> Values {
+        let values = self.program.run(control);
         let points = &self.patch_points;
-        self.patches = super::parallel::map(points.len(), self.threads, |i| {
+        let patches = super::parallel::map(points.len(), self.threads, |i| {
             points[i].patch(|v| values[v as usize])
         });
-        for d in &mut self.deep {
-            d.positions = d.points.iter().map(|&p| values[p as usize]).collect();
-        }
+        let deep = self
+            .deep
+            .iter()
+            .map(|d| d.points.iter().map(|&p| values[p as usize]).collect())
+            .collect();
+        Values { patches, deep }
     }
 
     /// Set how many threads batches of points ([`Evaluator::evaluate_many`],
@@ -296,116 +313,16 @@ impl Evaluator {
         self.ptex.len()
     }
 
-    /// A leaf whose control points are vertices of a fragment whose vertices are `points`.
-    fn leaf(&mut self, p: PatchPoints, points: &[u32]) -> Node {
-        self.patch_points.push(PatchPoints {
-            vertices: p.vertices.map(|v| {
-                if v == NO_POINT {
-                    NO_POINT
-                } else {
-                    points[v as usize]
-                }
-            }),
-            boundary: p.boundary,
-        });
-        Node::Patch((self.patch_points.len() - 1) as u32)
-    }
-
-    /// A deep node for fragment `nb` whose vertices are `points`.
-    fn deep_node(&mut self, nb: Neighbourhood, points: Vec<u32>) -> Node {
-        self.deep.push(DeepFragment {
-            nb,
-            points,
-            positions: Vec::new(),
-        });
-        Node::Deep((self.deep.len() - 1) as u32)
-    }
-
-    /// One level of refinement of `nb` (whose vertices are `points`), the child's points
-    /// recorded in the program.
-    fn refine_recorded(&mut self, nb: &Neighbourhood, points: &[u32]) -> (Neighbourhood, Vec<u32>) {
-        let level = nb.level(&self.options);
-        let r = refine_last(&level, VertexOrder::VerticesFirst);
-        let child_points = self.program.record(&level, &r, points);
-        (nb.refined(&level, &r), child_points)
-    }
-
-    /// The node for face `f` of `nb` (a fragment holding the faces around `f`, or more; the
-    /// patch test only looks at `f`'s corners, whatever else the fragment holds; its vertices
-    /// are `points`), refined down to [`CACHE_DEPTH`]. The fragment around `f` is cut out
-    /// only when `f` is not regular: most children of a refined face are, and the cut costs
-    /// more than the test.
-    fn build(&mut self, nb: &Neighbourhood, points: &[u32], f: u32, depth: u32) -> Result<Node> {
-        if let Some(p) = regular_patch_points(nb, f, &self.options) {
-            return Ok(self.leaf(p, points));
-        }
-        let (nb, globals) = nb.around_face(f);
-        let points: Vec<u32> = globals.iter().map(|&g| points[g as usize]).collect();
-        if depth >= CACHE_DEPTH {
-            return Ok(self.deep_node(nb, points));
-        }
-        let (refined, refined_points) = self.refine_recorded(&nb, &points);
-        let first = self.nodes.len() as u32;
-        self.nodes.extend([Node::NoSurface; 4]);
-        for q in 0..4u32 {
-            let child = self.build(&refined, &refined_points, q, depth + 1)?;
-            self.nodes[(first + q) as usize] = child;
-        }
-        Ok(Node::Split(first))
-    }
-
-    /// Like [`Evaluator::build`] for face `index` of level `depth` of `levels[0]` (whose
-    /// face 0 is the control face), when that fragment holds a face that repeats a vertex.
-    /// Refining such a face makes two distinct edges join the same two vertices, which a
-    /// re-extracted fragment would merge; so every level is the refinement of the previous
-    /// level as a whole (`levels[d]` = `levels[0]` refined `d` times, computed on first
-    /// use), down to [`DEGENERATE_DEPTH`]. Deeper nodes (or all nodes below the depth where
-    /// the fragment would pass [`DEGENERATE_BUDGET`] faces) are refined level by level like
-    /// the others, which is exact unless the point is within `2^-depth` of a corner next to
-    /// the repeated vertex.
-    fn build_from_root(
-        &mut self,
-        levels: &mut Vec<RootLevel>,
-        depth: u32,
-        index: u32,
-    ) -> Result<Node> {
-        while levels.len() <= depth as usize {
-            let last = &levels[levels.len() - 1];
-            let r = refine(&last.level, VertexOrder::VerticesFirst);
-            let points = self.program.record(&last.level, &r, &last.points);
-            let nb = last.nb.refined(&last.level, &r);
-            levels.push(RootLevel {
-                level: r.child,
-                nb,
-                points,
-            });
-        }
-        let here = &levels[depth as usize];
-        let (nb, globals) = here.nb.around_face(index);
-        let points: Vec<u32> = globals.iter().map(|&g| here.points[g as usize]).collect();
-        if let Some(p) = regular_patch_points(&nb, 0, &self.options) {
-            return Ok(self.leaf(p, &points));
-        }
-        let next_size = here.nb.num_faces() * 4;
-        if depth >= DEGENERATE_DEPTH
-            || (levels.len() <= depth as usize + 1 && next_size > DEGENERATE_BUDGET)
-        {
-            return Ok(self.deep_node(nb, points));
-        }
-        let first = self.nodes.len() as u32;
-        self.nodes.extend([Node::NoSurface; 4]);
-        for q in 0..4u32 {
-            let child = self.build_from_root(levels, depth + 1, index * 4 + q)?;
-            self.nodes[(first + q) as usize] = child;
-        }
-        Ok(Node::Split(first))
-    }
-
     /// Limit position and derivatives at `(u, v)` of parametric face `face`.
     ///
     /// Errors ([`Error::InvalidArgument`]): `face` out of range, `u` or `v` outside `[0, 1]`
     /// or NaN, a hole face, a face without limit surface (boundary interpolation "none").
     pub fn evaluate(&self, face: u32, u: f64, v: f64) -> Result<LimitSample> {
+        self.evaluate_with(&self.values, face, u, v)
+    }
+
+    /// [`Evaluator::evaluate`] under `values` (the positions' or a primvar's).
+    fn evaluate_with(&self, values: &Values, face: u32, u: f64, v: f64) -> Result<LimitSample> {
         let Some(&root) = self.roots.get(face as usize) else {
             return Err(Error::invalid_argument(format!(
                 "face {face} is out of range; the mesh has {} parametric faces",
@@ -421,7 +338,7 @@ impl Evaluator {
         loop {
             match node {
                 Node::Patch(p) => {
-                    let (position, ds, dt) = self.patches[p as usize].evaluate(s, t);
+                    let (position, ds, dt) = values.patches[p as usize].evaluate(s, t);
                     return Ok(LimitSample {
                         position,
                         du: ds * scale,
@@ -434,8 +351,8 @@ impl Evaluator {
                     (s, t, scale) = (cs, ct, scale * 2.0);
                 }
                 Node::Deep(d) => {
-                    let d = &self.deep[d as usize];
-                    return self.evaluate_deep(&d.nb, &d.positions, s, t, scale);
+                    let nb = &self.deep[d as usize].nb;
+                    return self.evaluate_deep(nb, &values.deep[d as usize], s, t, scale);
                 }
                 Node::NoSurface => return Err(self.no_surface_error(face)),
             }
@@ -675,5 +592,7 @@ fn faces_without_surface(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
         .collect()
 }
 
+mod build;
+mod primvar;
 #[cfg(test)]
 mod tests;

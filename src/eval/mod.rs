@@ -31,7 +31,7 @@ pub mod vertex_limit;
 mod vertex_ring;
 
 pub use domain::Domain;
-pub use evaluator::Evaluator;
+pub use evaluator::{Evaluator, PrimvarSamples};
 pub use sample::LimitSample;
 pub use stencil::StencilTable;
 pub use surface::{require_surface, vertices_with_surface};

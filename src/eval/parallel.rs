@@ -1,6 +1,8 @@
 //! Work split over threads with results independent of the thread count: contiguous ranges
 //! of indices, one per thread, joined in order (scoped standard threads, no pool).
 
+use std::ops::Range;
+
 /// Fewest items worth a thread: below this a batch runs on the calling thread.
 const MIN_ITEMS_PER_THREAD: usize = 1024;
 
@@ -13,6 +15,33 @@ pub(crate) fn resolve_threads(requested: usize) -> usize {
     }
 }
 
+/// `f(range)` for contiguous ranges covering `0..n`, in order, one per thread on up to
+/// `threads` threads (0: all cores; one range, possibly empty, below
+/// `MIN_ITEMS_PER_THREAD` items a thread).
+pub(crate) fn map_ranges<T: Send>(
+    n: usize,
+    threads: usize,
+    f: impl Fn(Range<usize>) -> T + Sync,
+) -> Vec<T> {
+    let threads = resolve_threads(threads)
+        .min(n / MIN_ITEMS_PER_THREAD)
+        .max(1);
+    if threads == 1 {
+        return vec![f(0..n)];
+    }
+    let chunk = n.div_ceil(threads);
+    let f = &f;
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..threads)
+            .map(|t| scope.spawn(move || f(t * chunk..((t + 1) * chunk).min(n))))
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .collect()
+    })
+}
+
 /// `f(i)` for every `i` in `0..n`, in order, on up to `threads` threads (0: all cores). Each
 /// item is computed exactly as on one thread, so the result does not depend on the thread
 /// count; on error, the error of the lowest failing index (as one thread would stop at).
@@ -21,27 +50,11 @@ pub(crate) fn try_map<T: Send, E: Send>(
     threads: usize,
     f: impl Fn(usize) -> Result<T, E> + Sync,
 ) -> Result<Vec<T>, E> {
-    let threads = resolve_threads(threads)
-        .min(n / MIN_ITEMS_PER_THREAD)
-        .max(1);
-    if threads == 1 {
-        return (0..n).map(f).collect();
-    }
-    let chunk = n.div_ceil(threads);
-    let f = &f;
-    let parts: Vec<Result<Vec<T>, E>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..threads)
-            .map(|t| {
-                let range = t * chunk..((t + 1) * chunk).min(n);
-                scope.spawn(move || range.map(f).collect::<Result<Vec<T>, E>>())
-            })
-            .collect();
-        handles
-            .into_iter()
-            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .collect()
+    let parts = map_ranges(n, threads, |range| {
+        range.map(&f).collect::<Result<Vec<T>, E>>()
     });
-    let mut out = Vec::with_capacity(n);
+    let mut parts = parts.into_iter();
+    let mut out = parts.next().unwrap_or_else(|| Ok(Vec::new()))?;
     for part in parts {
         out.extend(part?);
     }

@@ -128,6 +128,20 @@ impl PointProgram {
         values
     }
 
+    /// Append the local points of `other` (a program over the same control points) after
+    /// these; returns how `other`'s points are numbered now.
+    pub fn append(&mut self, other: &PointProgram) -> impl Fn(u32) -> u32 + Copy {
+        let nc = self.num_control;
+        let shift = self.num_points() as u32 - nc;
+        let point = move |p: u32| if p < nc { p } else { p + shift };
+        let base = self.sources.len() as u32;
+        self.sources.extend(other.sources.iter().map(|&s| point(s)));
+        self.weights.extend_from_slice(&other.weights);
+        self.offsets
+            .extend(other.offsets[1..].iter().map(|&o| o + base));
+        point
+    }
+
     /// Keep only the points `roots` name and those they read, numbered in the same order;
     /// `roots` are renumbered in place.
     pub fn prune(&mut self, roots: &mut [&mut [u32]]) {

@@ -42,8 +42,9 @@ pub(crate) unsafe fn evaluator_arg<'a>(p: *const profsubd_evaluator) -> FfiResul
 
 /// Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
 /// The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
-/// little more around extraordinary vertices and semi-sharp features. The options' progress
-/// callback and memory budget apply (`profsubd_options_set_progress`,
+/// little more around extraordinary vertices and semi-sharp features; on the threads
+/// `profsubd_options_set_threads` sets (default all cores), the result the same for any. The
+/// options' progress callback and memory budget apply (`profsubd_options_set_progress`,
 /// `_set_memory_budget`): `PROFSUBD_ERROR_CANCELLED`, `PROFSUBD_ERROR_LIMIT_EXCEEDED`.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_evaluator_new(
@@ -55,8 +56,8 @@ pub unsafe extern "C" fn profsubd_evaluator_new(
         let m = mesh_arg(mesh, "mesh")?;
         let out = arg_out(out, "out")?;
         let opts = resolve(options, m)?;
-        let control = &options_or_default(options)?.settings.control;
-        let ev = Evaluator::with_control(m, &opts, control)?;
+        let o = options_or_default(options)?;
+        let ev = Evaluator::build_on(m, &opts, o.threads, &o.settings.control)?;
         out.write(handle::into_raw(ev));
         Ok(())
     })
@@ -282,6 +283,71 @@ pub unsafe extern "C" fn profsubd_evaluator_evaluate(
         dv,
         std::ptr::null_mut(),
     )
+}
+
+/// Evaluate per-vertex data of `dim` doubles (a primvar: colours, UVs as vertex data,
+/// displacements) at `n` points `(faces[i], u[i], v[i])` (Ptex domain, as
+/// `profsubd_evaluator_evaluate`): `data` holds `dim * num_vertices` doubles, vertex after
+/// vertex, `num_vertices` the mesh's vertex count; the limit values go into `values` and,
+/// when not NULL, the derivatives with respect to u and v into `du` and `dv` (`dim` doubles
+/// per point each). With `dim` = 3 and the control positions as `data` the result is bit for
+/// bit `profsubd_evaluator_evaluate`'s. Cost: a pass over the evaluator's stored stencils
+/// per three components, then the points; threads as `profsubd_evaluator_set_threads`.
+///
+/// Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`): `dim` 0, `num_vertices` not the mesh's
+/// vertex count, a non-finite value in `data`, the point errors of
+/// `profsubd_evaluator_evaluate` (message naming the point); `PROFSUBD_ERROR_NULL_ARGUMENT`
+/// for a NULL `evaluator`, or a NULL `data`, `faces`, `u`, `v` or `values` with data to
+/// hold. Nothing is written on error.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn profsubd_evaluator_evaluate_primvar(
+    evaluator: *const profsubd_evaluator,
+    data: *const f64,
+    dim: usize,
+    num_vertices: usize,
+    faces: *const u32,
+    u: *const f64,
+    v: *const f64,
+    n: usize,
+    values: *mut f64,
+    du: *mut f64,
+    dv: *mut f64,
+) -> profsubd_status {
+    status_call(|| {
+        let ev = evaluator_arg(evaluator)?;
+        let nv = ev.mesh().num_vertices();
+        if num_vertices != nv {
+            // Checked before `data` is read: `dim * num_vertices` doubles may not be there.
+            return Err(FfiError::invalid_argument(format!(
+                "num_vertices is {num_vertices}; the mesh has {nv} vertices"
+            )));
+        }
+        if dim == 0 {
+            return Err(FfiError::invalid_argument(
+                "primvar width (dim) must be at least 1",
+            ));
+        }
+        let len = dim
+            .checked_mul(nv)
+            .ok_or_else(|| FfiError::invalid_argument(format!("dim {dim} is absurdly large")))?;
+        let data = arg_slice(data, len, "data")?;
+        let faces = arg_slice(faces, n, "faces")?;
+        let us = arg_slice(u, n, "u")?;
+        let vs = arg_slice(v, n, "v")?;
+        let out = CopyOut::new(n, std::ptr::null_mut())?.buffer(values, dim, "values")?;
+        let du = optional_out(du, n, dim, "du")?;
+        let dv = optional_out(dv, n, dim, "dv")?;
+        let p = ev.evaluate_primvar(data, dim, faces, us, vs)?;
+        fill(out, p.values);
+        if let Some(du) = du {
+            fill(du, p.du);
+        }
+        if let Some(dv) = dv {
+            fill(dv, p.dv);
+        }
+        Ok(())
+    })
 }
 
 /// Evaluate `n` points `(faces[i], u[i], v[i])` given in `domain` (a `profsubd_domain`

@@ -72,6 +72,8 @@ pub struct OptionsData {
     pub construct: ConstructOptions,
     /// Order of the child vertices of uniform refinement (`src/ffi/refine.rs`).
     pub order: VertexOrder,
+    /// Threads for building evaluators and their batches of points (0: all cores).
+    pub threads: usize,
 }
 
 /// The settings of the construction inputs an options object holds; unset ones take the
@@ -192,6 +194,23 @@ pub unsafe extern "C" fn profsubd_options_set_crease_method(
             (PROFSUBD_CREASE_CHAIKIN as i32, CreaseMethod::Chaikin),
         ];
         o.subdiv.crease_method = Some(enum_arg("crease method", method, &table)?);
+        Ok(())
+    })
+}
+
+/// Set how many threads an evaluator built with these options (`profsubd_evaluator_new`)
+/// uses for its build and its batches of points: 0 (the default) for all cores, 1 for the
+/// calling thread only (`profsubd_evaluator_set_threads` changes it afterwards). Results are
+/// bit for bit the same for every setting.
+///
+/// Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `options`.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_options_set_threads(
+    options: *mut profsubd_options,
+    threads: usize,
+) -> profsubd_status {
+    status_call(|| {
+        handle::borrow_mut(options, "options")?.threads = threads;
         Ok(())
     })
 }

@@ -703,3 +703,181 @@ fn thread_count_changes_nothing_in_the_results() {
         profsubd_evaluator_free(ev);
     }
 }
+
+#[test]
+fn evaluate_primvar_is_evaluate_for_the_positions_and_rejects_bad_input_writing_nothing() {
+    let ev = evaluator();
+    let faces = [0u32, 2, 5, 7, 16];
+    let u = [0.25, 0.0, 0.5, 1.0, 0.9];
+    let v = [0.75, 0.0, 0.5, 0.3, 0.1];
+    let xyz: Vec<f64> = mesh()
+        .positions()
+        .iter()
+        .flat_map(|p| p.to_array())
+        .collect();
+    let (mut p, mut du, mut dv) = ([0.0; 15], [0.0; 15], [0.0; 15]);
+    let (mut q, mut qu, mut qv) = ([0.0; 15], [0.0; 15], [0.0; 15]);
+    let bits = |x: &[f64]| x.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+    unsafe {
+        let (f, us, vs) = (faces.as_ptr(), u.as_ptr(), v.as_ptr());
+        let st = profsubd_evaluator_evaluate(
+            ev,
+            f,
+            us,
+            vs,
+            5,
+            p.as_mut_ptr(),
+            du.as_mut_ptr(),
+            dv.as_mut_ptr(),
+        );
+        assert_eq!(st, PROFSUBD_OK);
+        let st = profsubd_evaluator_evaluate_primvar(
+            ev,
+            xyz.as_ptr(),
+            3,
+            9,
+            f,
+            us,
+            vs,
+            5,
+            q.as_mut_ptr(),
+            qu.as_mut_ptr(),
+            qv.as_mut_ptr(),
+        );
+        assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+        assert_eq!(
+            (bits(&q), bits(&qu), bits(&qv)),
+            (bits(&p), bits(&du), bits(&dv))
+        );
+
+        // Width 1, the z coordinate alone, derivatives not asked for.
+        let z: Vec<f64> = xyz.iter().skip(2).step_by(3).copied().collect();
+        let mut w = [0.0; 5];
+        let st = profsubd_evaluator_evaluate_primvar(
+            ev,
+            z.as_ptr(),
+            1,
+            9,
+            f,
+            us,
+            vs,
+            5,
+            w.as_mut_ptr(),
+            null_mut(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_OK, "{}", last_error());
+        assert_eq!(
+            bits(&w),
+            bits(&p.iter().skip(2).step_by(3).copied().collect::<Vec<_>>())
+        );
+
+        let mut nan = z.clone();
+        nan[4] = f64::INFINITY;
+        let hole = [1u32; 5];
+        let cases: [(
+            *const profsubd_evaluator,
+            *const f64,
+            usize,
+            usize,
+            *const u32,
+            profsubd_status,
+            &str,
+        ); 7] = [
+            (
+                ev,
+                z.as_ptr(),
+                0,
+                9,
+                f,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "width (dim) must be at least 1",
+            ),
+            (
+                ev,
+                z.as_ptr(),
+                1,
+                8,
+                f,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "num_vertices is 8; the mesh has 9",
+            ),
+            (
+                ev,
+                z.as_ptr(),
+                usize::MAX,
+                9,
+                f,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "absurdly large",
+            ),
+            (
+                ev,
+                nan.as_ptr(),
+                1,
+                9,
+                f,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "primvar value 4 (vertex 4, component 0) is not finite",
+            ),
+            (
+                ev,
+                z.as_ptr(),
+                1,
+                9,
+                hole.as_ptr(),
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "point 0: face 1 is a hole",
+            ),
+            (ev, null(), 1, 9, f, PROFSUBD_ERROR_NULL_ARGUMENT, "data"),
+            (
+                null(),
+                z.as_ptr(),
+                1,
+                9,
+                f,
+                PROFSUBD_ERROR_NULL_ARGUMENT,
+                "evaluator",
+            ),
+        ];
+        for (e, data, dim, nv, fc, status, message) in cases {
+            let mut out = [-7.0; 5];
+            let mut out_du = [-7.0; 5];
+            let st = profsubd_evaluator_evaluate_primvar(
+                e,
+                data,
+                dim,
+                nv,
+                fc,
+                us,
+                vs,
+                5,
+                out.as_mut_ptr(),
+                out_du.as_mut_ptr(),
+                null_mut(),
+            );
+            assert_eq!(st, status, "{message}: {}", last_error());
+            assert!(last_error().contains(message), "{}", last_error());
+            assert!(
+                out.iter().chain(&out_du).all(|&x| x == -7.0),
+                "{message}: written on error"
+            );
+        }
+        let st = profsubd_evaluator_evaluate_primvar(
+            ev,
+            z.as_ptr(),
+            1,
+            9,
+            f,
+            us,
+            vs,
+            5,
+            null_mut(),
+            null_mut(),
+            null_mut(),
+        );
+        assert_eq!(st, PROFSUBD_ERROR_NULL_ARGUMENT);
+        assert!(last_error().contains("values"), "{}", last_error());
+        profsubd_evaluator_free(ev);
+    }
+}

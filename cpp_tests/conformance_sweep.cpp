@@ -272,8 +272,9 @@ int main() {
         }
     }
     // A sketch-curve patch through the C API: four boundary strokes on z = x^2 - y^2 and one
-    // interior stroke, best-fit projection (NULL normal), 10 x 10 quads; two boundary curves
-    // are refused with INVALID_ARGUMENT and leave the output untouched.
+    // interior stroke, projected along z, 10 x 10 quads, tau = 1; at tau = 2 its limit surface
+    // folds (6 faces) and, like two boundary curves, is refused with INVALID_ARGUMENT, leaving
+    // the output untouched.
     {
         std::vector<double> pts;
         std::vector<size_t> sizes;
@@ -292,7 +293,7 @@ int main() {
         profsubd_options_set_samples(raw_options, 10, 10);
         const double up[3] = {0, 0, 1};
         profsubd_fitted *s = nullptr;
-        profsubd_status st = profsubd_curves(pts.data(), sizes.data(), 4, 1, 2.0, up, raw_options, &s);
+        profsubd_status st = profsubd_curves(pts.data(), sizes.data(), 4, 1, 1.0, up, raw_options, &s);
         Model m;
         if (take_result(ck, "sketch curves 10x10", st, s, &m)) {
             models.push_back(std::move(m));
@@ -303,6 +304,11 @@ int main() {
                          PROFSUBD_ERROR_INVALID_ARGUMENT &&
                      untouched == nullptr,
                  "two boundary curves are refused");
+        ck.set_context("sketch curves 10x10, tau = 2");
+        ck.check(profsubd_curves(pts.data(), sizes.data(), 4, 1, 2.0, up, raw_options, &untouched) ==
+                         PROFSUBD_ERROR_INVALID_ARGUMENT &&
+                     untouched == nullptr,
+                 "a folded limit surface is refused");
     }
     // Partial revolutions: poles on the boundary meridians (sectors with a corner apex), and
     // flat caps (sectors, meridian planes) closing the solid.

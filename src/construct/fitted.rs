@@ -13,6 +13,9 @@ use crate::eval::Evaluator;
 use crate::fit::{fit_cage, FitReport, FittedCage};
 use crate::mesh::{Mesh, MeshParts};
 
+/// Folded faces named in a refusal's message; the count says how many there are in all.
+const MAX_LISTED: usize = 12;
+
 /// A fitted construction: a control mesh whose vertices' exact limit positions are the data
 /// points.
 #[derive(Debug, Clone)]
@@ -76,25 +79,38 @@ impl Fitted {
     }
 
     /// `self` if its limit surface does not fold ([`Fitted::surface_report`]); otherwise an
-    /// [`Error::InvalidArgument`] naming `what`, the folded face count and where the worst
-    /// reversal lies: a construction whose layout is not known to be fold-free for every
-    /// input refuses rather than return a folded surface. Errors: those of the evaluation.
-    pub(crate) fn refuse_folds(self, what: &str) -> Result<Fitted> {
+    /// [`Error::InvalidArgument`] naming `what`, the folded face count, the folded faces and
+    /// where the worst reversal lies, then `hint` (what to change): a construction whose
+    /// layout is not known to be fold-free for every input refuses rather than return a
+    /// folded surface. Errors: those of the evaluation.
+    pub(crate) fn refuse_folds(self, what: &str, hint: &str) -> Result<Fitted> {
         let folded = self.surface_report()?.folded_faces;
         if folded == 0 {
             return Ok(self);
         }
-        // Only on refusal: where the worst reversal is, for the message.
+        // Only on refusal: which faces and where the worst reversal is, for the message.
         let ev = Evaluator::new(&self.mesh, &self.mesh.options().resolve())?;
         let folds = find_folds(&ev, &FoldSettings::default())?;
         let (face, u, v) = folds.worst_at.unwrap_or((0, 0.5, 0.5));
         let p = ev.evaluate(face as u32, u, v)?.position;
+        let faces = folds.folded_face_indices();
+        let mut list: Vec<String> = faces
+            .iter()
+            .take(MAX_LISTED)
+            .map(usize::to_string)
+            .collect();
+        if faces.len() > MAX_LISTED {
+            list.push("...".to_string());
+        }
         Err(Error::invalid_argument(format!(
-            "{what}: the fitted limit surface would fold in {folded} faces (worst normal \
+            "{what}: the fitted limit surface would fold in {folded} faces ({}; worst normal \
              reversal {:.0}° in face {face}, near ({:.6}, {:.6}, {:.6})); refused rather than \
-             returned folded (the fold check of profsubd check --surface); other sample \
-             counts give other layouts",
-            folds.worst_reversal_deg, p.x, p.y, p.z
+             returned folded (the fold check of profsubd check --surface); {hint}",
+            list.join(", "),
+            folds.worst_reversal_deg,
+            p.x,
+            p.y,
+            p.z
         )))
     }
 }

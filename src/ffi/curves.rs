@@ -21,7 +21,8 @@ use crate::ffi::status::profsubd_status;
 /// and crease method the surface is fitted under and tagged with. Errors:
 /// `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad curves or settings (fewer than 3 or more than 4
 /// boundary curves, a curve with fewer than 2 points, NaN, tau < 0, no projection plane, a
-/// boundary whose projection folds; the message says which), `PROFSUBD_ERROR_NULL_ARGUMENT`
+/// boundary whose projection folds, a fitted limit surface that folds: refused, the message
+/// naming the folded faces; the message says which), `PROFSUBD_ERROR_NULL_ARGUMENT`
 /// for a NULL array with a non-zero count, `PROFSUBD_ERROR_NUMERICAL` if the fit misses its
 /// tolerance.
 #[no_mangle]

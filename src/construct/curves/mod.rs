@@ -288,9 +288,23 @@ impl Design for BlendDesign<'_> {
 }
 
 /// The surface of `input`'s curves under `settings`, fitted: the exact limit surface passes
-/// through every blended point. Errors: those of [`CurvesInput::blend`]
-/// ([`Error::InvalidArgument`]) and of the fit.
+/// through every blended point. The blend's layout is not fold-free: with interior curves the
+/// fitted limit surface can fold as the samples grow (the grid nodes crowd onto the curves'
+/// pre-images while the blend has ridges along them), so every build runs the fold check and
+/// refuses a folded surface.
+///
+/// Errors: those of [`CurvesInput::blend`] ([`Error::InvalidArgument`]) and of the fit; and
+/// [`Error::InvalidArgument`] if the limit surface folds, naming the folded faces and where
+/// the worst reversal lies.
 pub fn build(input: &CurvesInput, settings: &Settings) -> Result<Fitted> {
     let (parts, design) = input.cage(settings)?;
-    Fitted::fit(parts, settings, design)
+    let [nu, nv] = input.samples;
+    Fitted::fit(parts, settings, design)?.refuse_folds(
+        &format!(
+            "curves ({} interior, tau = {}, {nu} x {nv} samples)",
+            input.interior.len(),
+            input.tau
+        ),
+        "fewer samples or another tau give another layout",
+    )
 }

@@ -46,6 +46,7 @@ fn blend_is_eq_8_on_four_sides_and_exact_on_them() {
     assert_eq!(b.point(DVec2::new(1.0, 0.61)), s[1].point(0.61));
 }
 
+use crate::eval::folds::{find_folds, FoldSettings};
 use crate::eval::Evaluator;
 use crate::mesh::validate::check;
 
@@ -240,7 +241,8 @@ fn interior_curves_lie_on_the_limit_surface() {
         let settings = Settings::default();
         let blend = input.blend(&settings).unwrap();
         let grid = input.grid(&blend);
-        let fitted = build(&input, &settings).unwrap();
+        // Unguarded: `build` refuses the folded 16 x 16 and 32 x 32 fits, measured here.
+        let fitted = fit_unguarded(&input);
         let m = &fitted.mesh;
         let diagonal = m.bounding_box_diagonal();
         let ev = Evaluator::new(m, &m.options().resolve()).unwrap();
@@ -363,12 +365,54 @@ fn three_sided_open_corners_crossing_and_inside_curves_give_valid_surfaces() {
     // The crossing curve is clipped at u = 0 (the left side).
     let first = b.interior[0].pieces[0][0];
     assert!(first.uv.x.abs() < 1e-6, "{first:?}");
-    let f = build(&crossing, &Settings::default()).unwrap();
+    let f = fit_unguarded(&crossing);
     assert_manifold(&f);
-    println!(
-        "saddle 12x12 with a crossing and an inside curve: folded faces {}",
-        f.surface_report().unwrap().folded_faces
+    let folded = f.surface_report().unwrap().folded_faces;
+    println!("saddle 12x12 with a crossing and an inside curve: folded faces {folded}");
+    // Folded, so `build` refuses it.
+    assert!(folded > 0);
+    assert!(fold_refusal(&crossing).contains(&format!("would fold in {folded} faces")));
+}
+
+/// The fit `build` makes, without its fold guard.
+fn fit_unguarded(input: &CurvesInput) -> Fitted {
+    let settings = Settings::default();
+    let (parts, design) = input.cage(&settings).unwrap();
+    Fitted::fit(parts, &settings, design).unwrap()
+}
+
+/// The message with which `build` refuses `input`'s folded surface.
+fn fold_refusal(input: &CurvesInput) -> String {
+    match build(input, &Settings::default()) {
+        Err(Error::InvalidArgument(m)) if m.contains("would fold") => m,
+        other => panic!("expected a fold refusal, got {:?}", other.map(|_| ())),
+    }
+}
+
+#[test]
+fn folded_blends_are_refused_naming_the_faces() {
+    // The bonnet at tau = 2, 8 x 8: fold-free, returned.
+    assert_valid(&build(&bonnet(8), &Settings::default()).unwrap(), DVec3::Z);
+    // 16 x 16: the unguarded fit folds; build names its folded faces, where, and what to do.
+    let input = bonnet(16);
+    let f = fit_unguarded(&input);
+    let ev = Evaluator::new(&f.mesh, &f.mesh.options().resolve()).unwrap();
+    let folds = find_folds(&ev, &FoldSettings::default()).unwrap();
+    let faces = folds.folded_face_indices();
+    assert!(!faces.is_empty());
+    let m = fold_refusal(&input);
+    assert!(
+        m.starts_with(&format!(
+            "curves (2 interior, tau = 2, 16 x 16 samples): the fitted limit surface would \
+             fold in {} faces ({}",
+            faces.len(),
+            faces[0]
+        )),
+        "{m}"
     );
+    let (face, ..) = folds.worst_at.unwrap();
+    assert!(m.contains(&format!("in face {face}, near (")), "{m}");
+    assert!(m.ends_with("; fewer samples or another tau give another layout"));
 }
 
 fn message(f: &dyn Fn(&mut CurvesInput)) -> String {

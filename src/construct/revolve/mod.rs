@@ -313,10 +313,13 @@ pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
     if input.full_turn() {
         return Ok(fitted);
     }
-    fitted.refuse_folds(&format!(
-        "partial revolution ({}°, {} x {} samples)",
-        input.angle_deg, input.samples_around, input.samples_profile
-    ))
+    fitted.refuse_folds(
+        &format!(
+            "partial revolution ({}°, {} x {} samples)",
+            input.angle_deg, input.samples_around, input.samples_profile
+        ),
+        "other sample counts give other layouts",
+    )
 }
 
 #[cfg(test)]

@@ -19,10 +19,12 @@ from ._lib import lib as _c
 from .constructions import Model, build, default_profile_curves, profile, revolve, sweep
 from .errors import (
     BufferTooSmallError,
+    CancelledError,
     InternalError,
     InvalidArgumentError,
     InvalidHandleError,
     InvalidMeshError,
+    LimitExceededError,
     NonManifoldError,
     NullArgumentError,
     NumericalError,
@@ -43,8 +45,8 @@ def library_version() -> str:
 __version__ = library_version()
 
 __all__ = [
-    "LIBRARY_PATH", "BufferTooSmallError", "Evaluator", "FoldReport", "InternalError",
-    "InvalidArgumentError", "InvalidHandleError", "InvalidMeshError", "Mesh", "MeshReport",
+    "LIBRARY_PATH", "BufferTooSmallError", "CancelledError", "Evaluator", "FoldReport", "InternalError",
+    "InvalidArgumentError", "InvalidHandleError", "InvalidMeshError", "LimitExceededError", "Mesh", "MeshReport",
     "Model", "NonManifoldError", "NullArgumentError", "NumericalError", "Options", "ParseError",
     "ProfsubdError", "ProfsubdIOError", "StencilTable", "Tessellation", "build",
     "default_profile_curves", "library_version", "limit_stencils", "profile", "revolve", "sweep",

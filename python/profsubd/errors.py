@@ -79,6 +79,18 @@ class InvalidHandleError(ProfsubdError):
     status = 9
 
 
+class CancelledError(ProfsubdError):
+    """``PROFSUBD_ERROR_CANCELLED``: the options' progress callback asked to stop."""
+
+    status = 10
+
+
+class LimitExceededError(ProfsubdError, MemoryError):
+    """``PROFSUBD_ERROR_LIMIT_EXCEEDED``: a size ceiling or the memory budget was exceeded."""
+
+    status = 11
+
+
 class InternalError(ProfsubdError):
     """``PROFSUBD_ERROR_INTERNAL``: a bug in profsubd was caught (a Rust panic)."""
 
@@ -97,6 +109,8 @@ ERRORS: Dict[int, Type[ProfsubdError]] = {
         BufferTooSmallError,
         NumericalError,
         InvalidHandleError,
+        CancelledError,
+        LimitExceededError,
         InternalError,
     )
 }

@@ -325,6 +325,20 @@ typedef enum profsubd_osd_hazard {
 } profsubd_osd_hazard;
 
 /**
+ * Bits of the `flags` of `profsubd_offset_evaluate` and `profsubd_shell`.
+ */
+typedef enum profsubd_offset_flags {
+    /**
+     * Offset along the normal `S_u x S_v` (default: against it, inward).
+     */
+    PROFSUBD_OFFSET_OUTWARD = 1,
+    /**
+     * Accept an offset that folds instead of failing.
+     */
+    PROFSUBD_OFFSET_ACCEPT_FOLDS = 2,
+} profsubd_offset_flags;
+
+/**
  * An exact Catmull-Clark limit evaluator for one mesh and one set of options (opaque; safe
  * to share between threads for evaluation; `profsubd_evaluator_update_positions` replaces
  * the control points' positions, keeping the topology). Create with `profsubd_evaluator_new`, release

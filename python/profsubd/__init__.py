@@ -16,7 +16,7 @@ status, carrying the library's message. Adding a construction: see
 
 from ._lib import LIBRARY_PATH
 from ._lib import lib as _c
-from .constructions import Model, build, default_profile_curves, profile, revolve, sweep
+from .constructions import Model, blend, build, curves, default_profile_curves, profile, revolve, shell, sweep
 from .errors import (
     BufferTooSmallError,
     CancelledError,
@@ -48,6 +48,6 @@ __all__ = [
     "LIBRARY_PATH", "BufferTooSmallError", "CancelledError", "Evaluator", "FoldReport", "InternalError",
     "InvalidArgumentError", "InvalidHandleError", "InvalidMeshError", "LimitExceededError", "Mesh", "MeshReport",
     "Model", "NonManifoldError", "NullArgumentError", "NumericalError", "Options", "ParseError",
-    "ProfsubdError", "ProfsubdIOError", "StencilTable", "Tessellation", "build",
-    "default_profile_curves", "library_version", "limit_stencils", "profile", "revolve", "sweep",
+    "ProfsubdError", "ProfsubdIOError", "StencilTable", "Tessellation", "blend", "build", "curves",
+    "default_profile_curves", "library_version", "limit_stencils", "profile", "revolve", "shell", "sweep",
 ]

@@ -27,7 +27,7 @@ from typing import Any, Dict, Mapping, Optional, Sequence, Tuple
 import numpy as np
 
 from ._handle import Handle, as_array, copy_out, indices, ptr
-from ._lib import lib, new_struct
+from ._lib import constant, lib, new_struct
 from .errors import check
 from .evaluator import Evaluator
 from .mesh import Mesh, PathLike
@@ -206,3 +206,81 @@ def sweep(
     t = points(trajectory, 3, "trajectory")
     opts = Options(samples=(samples_profile, samples_trajectory), **settings)
     return build("profsubd_sweep", ptr(p), len(p), ptr(t), len(t), options=opts)
+
+
+def curves(
+    boundary: Sequence[Points],
+    interior: Sequence[Points] = (),
+    *,
+    tau: float = 2.0,
+    samples: Tuple[int, int] = (16, 16),
+    projection: Any = "auto",
+    **settings: Any,
+) -> Model:
+    """Patch through unorganized 3-D sketch curves (Qin & Wright): ``boundary`` 3 or 4 curves
+    (each (n, 3)) in order around the patch, ``interior`` any number of curves, ``tau`` the
+    attraction exponent, ``samples`` quads ``(nu, nv)`` along the first and second boundary
+    curve, ``projection`` ``"auto"`` (best-fit plane) or the plane's normal (3 numbers).
+    Settings: ``interpolation``, ``crease_method`` and ``boundary_interpolation`` (the
+    boundary rule: ``boundary`` names the curves here) — as ``profsubd curves``' JSON input
+    and flags."""
+    if "boundary_interpolation" in settings:
+        settings["boundary"] = settings.pop("boundary_interpolation")
+    arrays = [points(c, 3, f"boundary[{i}]") for i, c in enumerate(boundary)]
+    arrays += [points(c, 3, f"interior[{i}]") for i, c in enumerate(interior)]
+    flat = np.ascontiguousarray(np.concatenate(arrays) if arrays else np.zeros((0, 3)))
+    sizes = np.array([len(a) for a in arrays], dtype=np.uintp)
+    if isinstance(projection, str):
+        if projection != "auto":
+            raise ValueError(f'curves: projection must be "auto" or a normal, got {projection!r}')
+        normal = None
+    else:
+        normal = points([projection], 3, "projection").reshape(3)
+    opts = Options(samples=tuple(samples), **settings)
+    return build(
+        "profsubd_curves", ptr(flat), ptr(sizes), len(boundary), len(interior), float(tau),
+        None if normal is None else ptr(normal), options=opts,
+    )
+
+
+def blend(
+    pipes: Sequence[Mapping[str, Any]],
+    *,
+    order: int = 4,
+    tension: Optional[float] = None,
+    alpha: float = 0.5,
+    k_alpha: float = 0.5,
+    gbs_level: int = 1,
+    **settings: Any,
+) -> Model:
+    """N-way blend of pipes by generalized B-spline subdivision, as a fitted Catmull–Clark
+    mesh: ``pipes`` a list of ``{"end": (x, y, z), "axis": (x, y, z), "radius": r, "length":
+    l}`` (3 to 8), ``order`` (even, 4..8), ``tension`` (None: the pipes' exact circles),
+    ``alpha`` (centre), ``k_alpha`` (valleys), ``gbs_level`` — the keys of ``profsubd
+    blend``'s JSON input; settings ``boundary``, ``crease_method``."""
+    rows = []
+    for i, p in enumerate(pipes):
+        unknown = set(p) - {"end", "axis", "radius", "length"}
+        if unknown:
+            raise ValueError(f"pipes[{i}]: unknown keys {sorted(unknown)}")
+        rows.append([*p["end"], *p["axis"], p["radius"], p["length"]])
+    arr = points(rows if rows else np.zeros((0, 8)), 8, "pipes")
+    t = float("nan") if tension is None else float(tension)
+    return build(
+        "profsubd_blend", ptr(arr), len(arr), int(order), t, float(alpha), float(k_alpha), int(gbs_level),
+        options=Options(**settings),
+    )
+
+
+def shell(
+    mesh: Mesh, thickness: float, *, level: int = 0, tolerance: float = 0.0, outward: bool = False,
+    accept_folds: bool = False,
+) -> Model:
+    """Hollow solid of ``mesh`` (its tags give the subdivision options): outer wall, inner wall
+    at the offset by ``thickness`` (inward unless ``outward``), a creased rim for open
+    surfaces; the offset taken ``level`` levels finer, or at the level that meets
+    ``tolerance`` (absolute; 0: none). Folding offsets are refused unless ``accept_folds``."""
+    flags = (constant("PROFSUBD_OFFSET_OUTWARD") if outward else 0) | (
+        constant("PROFSUBD_OFFSET_ACCEPT_FOLDS") if accept_folds else 0
+    )
+    return build("profsubd_shell", mesh._ptr, float(thickness), int(level), float(tolerance), int(flags), options=None)

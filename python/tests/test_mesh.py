@@ -51,7 +51,9 @@ def test_obj_read_write_is_byte_exact(tmp_path, name):
     "kind, example",
     [("profile", None), ("profile", "profiles/vase.json"), ("profile", "profiles/spinning_top.json"),
      ("revolve", "sweeps/vase_cutaway.json"), ("sweep", "sweeps/handrail.json"),
-     ("sweep", "sweeps/torus_knot_tube.json")],
+     ("sweep", "sweeps/torus_knot_tube.json"), ("curves", "curves/bonnet.json"),
+     ("curves", "curves/three_sided.json"), ("curves", "curves/open_corners.json"), ("blend", "blends/tee.json"),
+     ("blend", "blends/six_way.json")],
 )
 def test_constructions_write_the_cli_bytes(tmp_path, cli, kind, example):
     # JSON keys are the keyword arguments: profsubd.KIND(**json) == `profsubd KIND file.json`.
@@ -63,6 +65,20 @@ def test_constructions_write_the_cli_bytes(tmp_path, cli, kind, example):
         targets = model.targets
     assert (tmp_path / "py.obj").read_bytes() == (tmp_path / "cli.obj").read_bytes()
     assert np.array_equal(targets, np.loadtxt(tmp_path / "cli.txt"))
+
+
+def test_shell_writes_the_cli_bytes(tmp_path, cli):
+    src = EXAMPLES / "profiles" / "bottle.obj"
+    subprocess.run([cli, "shell", str(src), "--thickness", "0.05", "-o", str(tmp_path / "cli.obj"),
+                    "--targets", str(tmp_path / "cli.txt")], check=True)
+    with profsubd.Mesh.read_obj(src) as base, profsubd.shell(base, 0.05) as model:
+        model.write_obj(tmp_path / "py.obj")
+        targets = model.targets
+        assert model.mesh.num_vertices == 2 * base.num_vertices  # closed: two walls, no rim
+    assert (tmp_path / "py.obj").read_bytes() == (tmp_path / "cli.obj").read_bytes()
+    assert np.array_equal(targets, np.loadtxt(tmp_path / "cli.txt"))
+    with profsubd.Mesh.read_obj(src) as base, pytest.raises(profsubd.InvalidArgumentError, match="thickness"):
+        profsubd.shell(base, -1.0)
 
 
 def test_options_reach_the_construction(tmp_path, cli):

@@ -33,6 +33,15 @@ pub const CURVATURE_EXPONENT: f64 = 0.75;
 /// is four height searches in the profile pipeline).
 pub const PROBES_PER_RING: usize = 8;
 
+/// Total turning (radians) up to which a stretch counts as straight and keeps uniform rings.
+/// Rounding alone gives a straight stretch a turning of 1e-15 to 1e-12 that depends on where
+/// it lies (a profile moved along the axis, or scaled); the density normalizes the turning
+/// by itself, so that noise was weighted as real curvature and the same shape moved
+/// elsewhere got other rings (1e-2 of its size apart). A floor under `κ̄` instead of this
+/// cut still left (noise / floor)^p, 1e-6. A stretch turning less than 1e-6 radians in all is
+/// straight for any model; one turning more is weighted as before.
+pub const MIN_TURNING: f64 = 1e-6;
+
 /// Fewest probe intervals of a stretch.
 pub const MIN_PROBES: usize = 64;
 
@@ -170,7 +179,7 @@ fn add_density(p: &[DVec2], cost: &mut [f64]) {
     let turning: f64 = tau.iter().sum();
     for (m, c) in cost.iter_mut().enumerate() {
         *c += ds[m];
-        if turning > 1e-12 && ds[m] > 0.0 {
+        if turning > MIN_TURNING && ds[m] > 0.0 {
             let ratio = tau[m] / ds[m] * length / turning;
             *c += ds[m] * math::powf(ratio, CURVATURE_EXPONENT);
         }

@@ -214,7 +214,10 @@ fn probes(c: &PlanarCurve, lo: f64, hi: f64) -> Vec<f64> {
     let k = c.knots();
     for w in k.windows(2) {
         let (a, b) = (w[0].max(lo), w[1].min(hi));
-        if b <= a {
+        // A sliver of a span (`lo` a rounding error short of a knot, as the height search
+        // gives) would repeat `lo` PROBES times: equal heights, so a rising segment would
+        // count as not rising, and the same shape scaled would be matched otherwise.
+        if b - a <= 1e-9 * (hi - lo) {
             continue;
         }
         for q in 1..=PROBES {

@@ -249,14 +249,32 @@ fn bad_input_gives_specific_errors() {
     };
     let folded = OffsetSurface::new(&mesh, &opts, accepted).unwrap();
     assert!(folded.evaluate(3, 0.5, 0.5).unwrap().folds());
-    // A collapsed control mesh: the ring next to the pole of a profile that stops 1e-16
-    // short of the axis has all its vertices at one point, without normal.
-    let collapsed: Vec<[f64; 2]> = vec![[1e-16, -R], [1.0, -1.5], [R, 0.0], [1.0, 1.5], [0.0, R]];
-    let fitted = revolve::build(&RevolveInput::new(collapsed), &Settings::default()).unwrap();
-    let e = OffsetSurface::new(&fitted.mesh, &opts, OffsetSettings::new(0.1))
+    // A collapsed control mesh: the boundary ring of an open revolution moved to one point
+    // has no normal there. (A profile stopping 1e-16 short of the axis would collapse a
+    // ring too, but its fit is refused first as ill-conditioned.)
+    let open: Vec<[f64; 2]> = vec![[0.5, -R], [1.0, -1.5], [R, 0.0], [1.0, 1.5], [0.0, R]];
+    let fitted = revolve::build(&RevolveInput::new(open), &Settings::default()).unwrap();
+    let mut parts = fitted.mesh.parts().clone();
+    let zmin = parts
+        .positions
+        .iter()
+        .map(|p| p.z)
+        .fold(f64::INFINITY, f64::min);
+    let ring: Vec<usize> = (0..parts.positions.len())
+        .filter(|&i| parts.positions[i].z <= zmin + 1e-9)
+        .collect();
+    assert!(ring.len() >= 4, "{ring:?}");
+    for &i in &ring {
+        parts.positions[i] = DVec3::new(0.0, 0.0, zmin);
+    }
+    let collapsed = Mesh::from_parts(parts).unwrap();
+    let e = OffsetSurface::new(&collapsed, &options(&collapsed), OffsetSettings::new(0.1))
         .unwrap_err()
         .to_string();
-    assert!(e.contains("vertex 0 has no normal"), "{e}");
+    assert!(
+        e.contains(&format!("vertex {} has no normal", ring[0])),
+        "{e}"
+    );
 }
 
 /// The README's thickness table: min / max / mean thickness over c at L = 0 and at the

@@ -13,7 +13,8 @@
 //! machines with and without AVX2/FMA.
 //!
 //! [`cage`]: the constructions' shared entry point, which tags a cage with its subdivision
-//! options and fits it under them.
+//! options and fits it under them. [`bending`]: the fairness term for vertices without data
+//! ([`Role::Fair`]).
 
 pub mod bending;
 pub mod cage;

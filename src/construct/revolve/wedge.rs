@@ -62,6 +62,12 @@
 //! at their layout positions as control points (`Fitted::fit_free`), so the cap's inside is
 //! the limit of the unfolded planar grid rather than an interpolant bent through every grid
 //! point (which overshot in the plane where the cells change size, and folded).
+//!
+//! *Faired pole sectors.* A pole sector's inner vertices (off its ring, its boundary radial
+//! lines and every crease) are marked [`Role::Fair`]: where the interpolating fit of the turn
+//! folds (the sector's `k` small cells against one long profile interval), `super::build`
+//! fits again with those data points released and their control points faired
+//! ([`crate::fit::bending`]), the rest still interpolated.
 
 use std::collections::HashSet;
 use std::f64::consts::{PI, TAU};

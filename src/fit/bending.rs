@@ -128,7 +128,7 @@ mod tests {
         let x: Vec<f64> = mesh
             .positions()
             .iter()
-            .map(|p| (p.x * 0.7).sin() * p.y + 0.1 * p.x * p.x)
+            .map(|p| crate::math::sin(p.x * 0.7) * p.y + 0.1 * p.x * p.x)
             .collect();
         let energy = |x: &[f64]| -> f64 {
             (0..x.len())

@@ -64,10 +64,10 @@
 //! point (which overshot in the plane where the cells change size, and folded).
 //!
 //! *Faired pole sectors.* A pole sector's inner vertices (off its ring, its boundary radial
-//! lines and every crease) are marked [`Role::Fair`]: where the interpolating fit of the turn
+//! lines and every crease) are marked `Role::Fair`: where the interpolating fit of the turn
 //! folds (the sector's `k` small cells against one long profile interval), `super::build`
 //! fits again with those data points released and their control points faired
-//! ([`crate::fit::bending`]), the rest still interpolated.
+//! (`fit::bending`), the rest still interpolated.
 
 use std::collections::HashSet;
 use std::f64::consts::{PI, TAU};
@@ -685,7 +685,7 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 /// (with caps) at flat ends, and meridian caps (see the module documentation); and the
 /// vertices' design coordinates (sectors as caps, meridian caps planar), and what the fit
 /// asks of each vertex: a meridian cap's inside and axis keep their layout positions
-/// ([`Role::Keep`]); a pole sector's inner vertices off creases are faired ([`Role::Fair`],
+/// (`Role::Keep`); a pole sector's inner vertices off creases are faired (`Role::Fair`,
 /// see the module documentation); the rest interpolate their data points.
 ///
 /// Errors ([`Error::InvalidArgument`]): caps with fewer than 2 rings, ends at one height, or

@@ -7,10 +7,11 @@ use glam::DVec3;
 
 use crate::construct::design::{DesignLattice, SurfaceReport};
 use crate::construct::settings::Settings;
+use crate::control::Control;
 use crate::error::{Error, Result};
 use crate::eval::folds::{find_folds, FoldSettings};
 use crate::eval::Evaluator;
-use crate::fit::{fit_cage, FitReport, FittedCage};
+use crate::fit::{fit_cage, FitOptions, FitReport, FittedCage};
 use crate::mesh::{Mesh, MeshParts};
 
 /// Folded faces named in a refusal's message; the count says how many there are in all.
@@ -61,8 +62,26 @@ impl Fitted {
         design: DesignLattice,
         free: &[bool],
     ) -> Result<Fitted> {
-        let FittedCage { mesh, targets, fit } =
-            fit_cage(parts, settings.fit_options(), free, &settings.control)?;
+        Fitted::fit_with(
+            parts,
+            settings.fit_options(),
+            &settings.control,
+            design,
+            free,
+        )
+    }
+
+    /// [`Fitted::fit_free`] under explicit fit options and control instead of a
+    /// construction's [`Settings`]: for a construction whose subdivision options come from
+    /// its input (the shell fits under the input mesh's tags).
+    pub(crate) fn fit_with(
+        parts: MeshParts,
+        options: FitOptions,
+        control: &Control,
+        design: DesignLattice,
+        free: &[bool],
+    ) -> Result<Fitted> {
+        let FittedCage { mesh, targets, fit } = fit_cage(parts, options, free, control)?;
         Ok(Fitted {
             mesh: Arc::new(mesh),
             targets,

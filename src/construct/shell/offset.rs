@@ -16,7 +16,7 @@
 use glam::DVec3;
 
 use super::corners::corner_directions;
-use super::crust::crust;
+use super::crust::Crust;
 use crate::error::{Error, Result};
 use crate::eval::ptex::PtexFaces;
 use crate::eval::{Domain, Evaluator, LimitSample};
@@ -133,6 +133,9 @@ pub struct OffsetSurface {
     fine: Evaluator,
     /// The signed corner vector of every vertex of the refined mesh (`O = S − D`).
     corners: Vec<DVec3>,
+    /// The crust of every refined face, from its corner vectors: built once, so a point
+    /// reads one face's coefficients instead of four vertices' vectors.
+    crusts: Vec<Crust>,
 }
 
 /// Whether every face of `mesh` is a quad.
@@ -181,9 +184,15 @@ impl OffsetSurface {
             Side::Inward => 1.0,
             Side::Outward => -1.0,
         };
-        let corners = corner_directions(&fine, &name)?
+        let corners: Vec<DVec3> = corner_directions(&fine, settings.thickness, &name)?
             .into_iter()
             .map(|m| m * (sign * settings.thickness))
+            .collect();
+        let crusts = (0..fine_mesh.num_faces())
+            .map(|g| {
+                let f = fine_mesh.face(g);
+                Crust::new(&[0, 1, 2, 3].map(|k| corners[f[k] as usize]))
+            })
             .collect();
         let mut first_child = Vec::with_capacity(mesh.num_faces());
         let mut next = 0u32;
@@ -198,6 +207,7 @@ impl OffsetSurface {
             quad: mesh.face_sizes().iter().map(|&n| n == 4).collect(),
             fine,
             corners,
+            crusts,
         };
         if !settings.accept_folds {
             offset.check_folds()?;
@@ -230,9 +240,7 @@ impl OffsetSurface {
     /// derivatives multiplied by `scale`.
     pub fn evaluate_fine(&self, face: u32, u: f64, v: f64, scale: f64) -> Result<OffsetSample> {
         let s = self.fine.evaluate(face, u, v)?;
-        let f = self.fine.mesh().face(face as usize);
-        let d = [0, 1, 2, 3].map(|k| self.corners[f[k] as usize]);
-        let (value, du, dv) = crust(&d, u, v);
+        let (value, du, dv) = self.crusts[face as usize].evaluate(u, v);
         let surface = LimitSample {
             position: s.position,
             du: s.du * scale,

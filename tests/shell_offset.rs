@@ -553,3 +553,68 @@ fn offset_is_c2_across_edges_between_regular_vertices() {
         assert!(jump <= 1e-5 * largest, "{name}: {jump} vs {largest}");
     }
 }
+
+/// catmark_cube with every edge infinitely sharp: the limit is the box itself, every vertex
+/// a corner of three sectors.
+fn sharp_box() -> Option<Mesh> {
+    let dir = osd_shapes::shapes_dir()?;
+    let mut parts = read_obj_file(&dir.join("catmark_cube.obj"))
+        .unwrap()
+        .mesh
+        .parts()
+        .clone();
+    let mut edges = std::collections::BTreeSet::new();
+    for face in parts.face_indices.chunks(4) {
+        for k in 0..4 {
+            let (a, b) = (face[k], face[(k + 1) % 4]);
+            edges.insert((a.min(b), a.max(b)));
+        }
+    }
+    parts.creases = edges
+        .into_iter()
+        .map(|(a, b)| Crease {
+            vertices: [a, b],
+            sharpness: SHARPNESS_INFINITE,
+        })
+        .collect();
+    Some(Mesh::from_parts(parts).unwrap())
+}
+
+/// A box with every edge infinitely sharp: the offset of a thin shell is the inner box,
+/// `c` from the walls to 1e-10 c at every lattice point and level (feathered miters); a crust
+/// finer than the corners' miters folds, and the refusal names the corner.
+#[test]
+fn sharp_box_offsets_exactly_and_names_the_corner_where_it_folds() {
+    let Some(mesh) = sharp_box() else { return };
+    let opts = options(&mesh);
+    for level in 0..=3 {
+        let settings = OffsetSettings {
+            level,
+            ..OffsetSettings::new(0.05)
+        };
+        let offset = OffsetSurface::new(&mesh, &opts, settings).unwrap();
+        let r = measure(&offset, 5).unwrap();
+        eprintln!(
+            "sharp box (side 2), c = 0.05, level {level}: thickness / c min {:.15} max {:.15}",
+            r.min, r.max
+        );
+        assert!(
+            (r.min - 1.0).abs() < 1e-10 && (r.max - 1.0).abs() < 1e-10,
+            "{r:?}"
+        );
+    }
+    // Level 3: faces 1/4 wide against a corner miter reaching c √2 = 0.28 sideways.
+    let settings = OffsetSettings {
+        level: 3,
+        ..OffsetSettings::new(0.2)
+    };
+    let e = OffsetSurface::new(&mesh, &opts, settings)
+        .unwrap_err()
+        .to_string();
+    eprintln!("{e}");
+    assert!(
+        e.contains("folds at face 0 of the mesh refined 3 times")
+            && e.contains("next to the crease or corner at vertex 0 of the mesh refined 3 times"),
+        "{e}"
+    );
+}

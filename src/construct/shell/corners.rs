@@ -73,13 +73,16 @@ fn corner_normal(s: &LimitSample, diag: f64) -> Option<DVec3> {
 /// vertex order, feathered next to creases for thickness `thickness` (see the module doc);
 /// a vertex in no face with surface gets the zero vector. `name` names a vertex in messages.
 ///
+/// With them, for every vertex, the crease vertex whose miter it carries or is feathered
+/// from (itself at a crease; `None` away from creases): what a fold message names.
+///
 /// Errors ([`Error::InvalidArgument`]): a vertex with faces but no normal; a crease turning
 /// by more than [`MAX_MITER_TURN_DEG`].
 pub fn corner_directions(
     ev: &Evaluator,
     thickness: f64,
     name: &dyn Fn(usize) -> String,
-) -> Result<Vec<DVec3>> {
+) -> Result<(Vec<DVec3>, Vec<Option<u32>>)> {
     let mesh: &Mesh = ev.mesh();
     let n = mesh.num_vertices();
     let diag = mesh.bounding_box_diagonal();
@@ -119,15 +122,22 @@ pub fn corner_directions(
         })
         .collect::<Result<Vec<DVec3>>>()?;
     let creases: Vec<bool> = sectors.iter().map(|s| s.len() > 1).collect();
-    feather(ev, &position, &creases, thickness, &mut directions);
-    Ok(directions)
+    let from = feather(ev, &position, &creases, thickness, &mut directions);
+    Ok((directions, from))
 }
 
 /// Feather the miters of the crease vertices (`crease[v]`) into the vertices around them
 /// (see the module doc): each vertex within [`FEATHER`]` · c tan(θ/2)` of its nearest crease
 /// vertex along the mesh's edges (limit positions `position`) gets that miter's sideways
-/// part, relative to its own normal, weighted linearly by distance.
-fn feather(ev: &Evaluator, position: &[DVec3], crease: &[bool], c: f64, dirs: &mut [DVec3]) {
+/// part, relative to its own normal, weighted linearly by distance. Returns the crease
+/// vertex each vertex carries the miter of (itself at a crease).
+fn feather(
+    ev: &Evaluator,
+    position: &[DVec3],
+    crease: &[bool],
+    c: f64,
+    dirs: &mut [DVec3],
+) -> Vec<Option<u32>> {
     use std::cmp::Reverse;
     use std::collections::BinaryHeap;
     let level = Level::from_mesh_with_options(ev.mesh(), ev.options());
@@ -168,6 +178,14 @@ fn feather(ev: &Evaluator, position: &[DVec3], crease: &[bool], c: f64, dirs: &m
         let weight = 1.0 - d / reach(x);
         dirs[v] = normal + (m - normal * m.dot(normal)) * weight;
     }
+    nearest
+        .iter()
+        .enumerate()
+        .map(|(v, near)| match near {
+            Some((_, x)) => Some(*x as u32),
+            None => crease[v].then_some(v as u32),
+        })
+        .collect()
 }
 
 /// A distance ordered for the heap (never NaN: sums of lengths of finite positions).

@@ -28,7 +28,7 @@ fn blocks(t: f64) -> ([f64; 2], [f64; 2]) {
 /// at `u` and `V` at `v`, `D = d₀ (1 − U)(1 − V) + d₁ U (1 − V) + d₂ U V + d₃ (1 − U) V`
 /// is bilinear in `(U, V)`: `D = a + b U + c V + e U V`. Built once per face, so a point
 /// costs two quintic polynomials and three vector multiply-adds.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Crust {
     a: DVec3,
     b: DVec3,

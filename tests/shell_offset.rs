@@ -328,6 +328,7 @@ fn thickness_table() {
 /// the plane through the y axis at angle `turn` from it, on an `8 × 4` grid a side creased
 /// infinitely sharp along the y axis. Each side's control points lie in its plane, so its
 /// limit surface is that flat strip.
+#[allow(clippy::disallowed_methods)] // reference data: the bend's sine and cosine
 fn bent_plate(turn: f64) -> Mesh {
     let (nx, ny) = (8usize, 4usize);
     let (sin, cos) = (turn.sin(), turn.cos());
@@ -362,6 +363,7 @@ fn bent_plate(turn: f64) -> Mesh {
 }
 
 /// The distance from `p` to the bent plate's limit surface (its two flat strips).
+#[allow(clippy::disallowed_methods)] // reference data: the bend's sine and cosine
 fn distance_to_plate(p: DVec3, turn: f64) -> f64 {
     let flat = DVec3::new(p.x.clamp(-1.0, 0.0), p.y.clamp(0.0, 1.0), 0.0);
     let axis = DVec3::new(turn.cos(), 0.0, turn.sin());

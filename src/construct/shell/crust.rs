@@ -186,8 +186,8 @@ mod tests {
     fn the_bilinear_form_is_the_block_sum_and_keeps_the_corners() {
         let d = corners();
         let c = Crust::new(&d);
-        for k in 0..4 {
-            assert!((c.corner(k) - d[k]).length() < 1e-15);
+        for (k, dk) in d.iter().enumerate() {
+            assert!((c.corner(k) - *dk).length() < 1e-15);
         }
         for &(u, v) in &[(0.0, 0.0), (0.2, 0.9), (0.5, 0.5), (0.61, 0.13), (1.0, 1.0)] {
             assert!((c.evaluate(u, v).0 - by_blocks(&d, u, v)).length() < 1e-15);

@@ -378,14 +378,14 @@ impl OffsetSurface {
                                  mitered corner vector moves the offset sideways by more than \
                                  the refined faces there are wide (corners of three or more \
                                  sectors, sides narrower than the feathering); use a coarser \
-                                 crust level"
+                                 crust level, a smaller thickness,"
                             ),
                             None => "the thickness exceeds the radius of curvature on the \
-                                     concave side"
+                                     concave side; use a smaller thickness,"
                                 .to_string(),
                         };
                         return Err(Error::invalid_argument(format!(
-                            "{}: {why}; use a smaller thickness, or accept folds",
+                            "{}: {why} or accept folds",
                             fold_message(&at, u, v, self.settings.thickness)
                         )));
                     }

@@ -2,15 +2,21 @@
 //! points, one thread, and the hollow solid's construction beside its evaluator's build.
 //!
 //! `cargo bench --bench offset`. Absolute times; the README quotes the ratio offset / limit
-//! from one run (not asserted).
+//! from one run (not asserted). On a loaded machine criterion's separate runs of the two
+//! drift apart, so the ratio is also measured *paired*: rounds timing the limit then the
+//! offset back to back over the same points, the median of the per-round ratios printed.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use profsubd::construct::shell::{hollow_solid, OffsetSettings, OffsetSurface};
 use profsubd::eval::Evaluator;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
+use std::time::Instant;
 
 mod support;
+
+/// Rounds of the paired ratio measurement.
+const PAIRED_ROUNDS: usize = 21;
 
 fn benches(c: &mut Criterion) {
     let model = support::bottle(64, 48);
@@ -33,6 +39,41 @@ fn benches(c: &mut Criterion) {
             }
         })
     });
+    let level0 = OffsetSurface::new(mesh, &options, OffsetSettings::new(thickness)).unwrap();
+    // Each round: the fastest of three passes of each (a pass preempted by another process
+    // is slower, never faster).
+    let fastest = |pass: &dyn Fn()| {
+        (0..3)
+            .map(|_| {
+                let start = Instant::now();
+                pass();
+                start.elapsed().as_secs_f64()
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let mut ratios: Vec<f64> = (0..PAIRED_ROUNDS)
+        .map(|_| {
+            let limit = fastest(&|| {
+                for i in 0..n {
+                    std::hint::black_box(ev.evaluate(faces[i], us[i], vs[i]).unwrap());
+                }
+            });
+            let offset = fastest(&|| {
+                for i in 0..n {
+                    std::hint::black_box(level0.evaluate(faces[i], us[i], vs[i]).unwrap());
+                }
+            });
+            offset / limit
+        })
+        .collect();
+    ratios.sort_by(f64::total_cmp);
+    println!(
+        "paired offset (level 0) / limit over {n} points, {label}: median {:.3} (min {:.3}, \
+         max {:.3}, {PAIRED_ROUNDS} rounds)",
+        ratios[PAIRED_ROUNDS / 2],
+        ratios[0],
+        ratios[PAIRED_ROUNDS - 1]
+    );
     for level in [0, 2] {
         // Timing only: the level-2 crust folds next to this model's creases (see the README).
         let settings = OffsetSettings {

@@ -7,10 +7,11 @@ use glam::DVec3;
 
 use crate::construct::design::{DesignLattice, SurfaceReport};
 use crate::construct::settings::Settings;
+use crate::control::Control;
 use crate::error::{Error, Result};
 use crate::eval::folds::{find_folds, FoldSettings};
 use crate::eval::Evaluator;
-use crate::fit::{fit_cage, FitReport, FittedCage, Role};
+use crate::fit::{fit_cage, FitOptions, FitReport, FittedCage, Role};
 use crate::mesh::{Mesh, MeshParts};
 
 /// Folded faces named in a refusal's message; the count says how many there are in all.
@@ -63,8 +64,26 @@ impl Fitted {
         design: DesignLattice,
         roles: &[Role],
     ) -> Result<Fitted> {
-        let FittedCage { mesh, targets, fit } =
-            fit_cage(parts, settings.fit_options(), roles, &settings.control)?;
+        Fitted::fit_with(
+            parts,
+            settings.fit_options(),
+            &settings.control,
+            design,
+            roles,
+        )
+    }
+
+    /// [`Fitted::fit_free`] under explicit fit options and control instead of a
+    /// construction's [`Settings`]: for a construction whose subdivision options come from
+    /// its input (the shell fits under the input mesh's tags).
+    pub(crate) fn fit_with(
+        parts: MeshParts,
+        options: FitOptions,
+        control: &Control,
+        design: DesignLattice,
+        roles: &[Role],
+    ) -> Result<Fitted> {
+        let FittedCage { mesh, targets, fit } = fit_cage(parts, options, roles, control)?;
         Ok(Fitted {
             mesh: Arc::new(mesh),
             targets,

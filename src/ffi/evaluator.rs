@@ -219,6 +219,58 @@ fn strict_arg(strict: i32) -> FfiResult<bool> {
     }
 }
 
+/// The arguments of a batch of points evaluated at `(faces[i], u[i], v[i])` in `domain` and
+/// written as positions, optional derivatives and an optional has-surface mask: read and
+/// checked in one place for every entry point that evaluates points (the evaluator's, the
+/// offset's). Nothing is written until [`PointArgs::write`].
+pub(crate) struct PointArgs<'a> {
+    /// How the points are meant.
+    pub domain: Domain,
+    /// The points' faces.
+    pub faces: &'a [u32],
+    /// Their `u`.
+    pub u: &'a [f64],
+    /// Their `v`.
+    pub v: &'a [f64],
+    positions: &'a mut [MaybeUninit<f64>],
+    du: Option<&'a mut [MaybeUninit<f64>]>,
+    dv: Option<&'a mut [MaybeUninit<f64>]>,
+    has_surface: Option<&'a mut [MaybeUninit<u8>]>,
+}
+
+impl<'a> PointArgs<'a> {
+    /// Read the C arguments of `n` points (`positions` required, `du`, `dv`, `has_surface`
+    /// may be NULL). Errors: a bad domain, a NULL input or `positions` with points to hold.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) unsafe fn read(
+        domain: i32,
+        faces: *const u32,
+        u: *const f64,
+        v: *const f64,
+        n: usize,
+        positions: *mut f64,
+        du: *mut f64,
+        dv: *mut f64,
+        has_surface: *mut u8,
+    ) -> FfiResult<PointArgs<'a>> {
+        Ok(PointArgs {
+            domain: domain_arg(domain)?,
+            faces: arg_slice(faces, n, "faces")?,
+            u: arg_slice(u, n, "u")?,
+            v: arg_slice(v, n, "v")?,
+            positions: CopyOut::new(n, std::ptr::null_mut())?.buffer(positions, 3, "positions")?,
+            du: optional_points(du, n, "du")?,
+            dv: optional_points(dv, n, "dv")?,
+            has_surface: optional_out(has_surface, n, 1, "has_surface")?,
+        })
+    }
+
+    /// Write one sample a point (`None`: NaN and has-surface 0).
+    pub(crate) fn write(self, samples: &[Option<LimitSample>]) {
+        write_marked(samples, self.positions, self.du, self.dv, self.has_surface);
+    }
+}
+
 /// Write the samples (`None`: NaN) and the has-surface mask into the caller's buffers.
 pub(crate) fn write_marked(
     samples: &[Option<LimitSample>],
@@ -382,20 +434,13 @@ pub unsafe extern "C" fn profsubd_evaluator_evaluate_points(
 ) -> profsubd_status {
     status_call(|| {
         let ev = evaluator_arg(evaluator)?;
-        let domain = domain_arg(domain)?;
         let strict = strict_arg(strict)?;
-        let faces = arg_slice(faces, n, "faces")?;
-        let us = arg_slice(u, n, "u")?;
-        let vs = arg_slice(v, n, "v")?;
-        let pos = CopyOut::new(n, std::ptr::null_mut())?.buffer(positions, 3, "positions")?;
-        let du = optional_points(du, n, "du")?;
-        let dv = optional_points(dv, n, "dv")?;
-        let mask = optional_out(has_surface, n, 1, "has_surface")?;
-        let samples = ev.evaluate_points(domain, faces, us, vs)?;
+        let args = PointArgs::read(domain, faces, u, v, n, positions, du, dv, has_surface)?;
+        let samples = ev.evaluate_points(args.domain, args.faces, args.u, args.v)?;
         if strict {
             require_surface(samples.clone(), "point")?;
         }
-        write_marked(&samples, pos, du, dv, mask);
+        args.write(&samples);
         Ok(())
     })
 }

@@ -5,12 +5,11 @@ use crate::construct::shell::{build, OffsetSettings, OffsetSurface, ShellInput, 
 use crate::eval::LimitSample;
 use crate::ffi::construct::{construct, TakeOptions};
 use crate::ffi::error::{FfiError, FfiResult};
-use crate::ffi::evaluator::{domain_arg, optional_out, optional_points, write_marked};
+use crate::ffi::evaluator::PointArgs;
 use crate::ffi::fitted::profsubd_fitted;
 use crate::ffi::mesh::{mesh_arg, profsubd_mesh};
 use crate::ffi::options::{profsubd_options, resolve, OptionsData};
 use crate::ffi::panic::status_call;
-use crate::ffi::ptr::{arg_slice, CopyOut};
 use crate::ffi::status::profsubd_status;
 
 /// Bits of the `flags` of `profsubd_offset_evaluate` and `profsubd_shell`.
@@ -89,24 +88,17 @@ pub unsafe extern "C" fn profsubd_offset_evaluate(
         let m = mesh_arg(mesh, "mesh")?;
         let opts = resolve(options, m)?;
         let s = settings(thickness, level, flags)?;
-        let domain = domain_arg(domain)?;
-        let faces = arg_slice(faces, n, "faces")?;
-        let us = arg_slice(u, n, "u")?;
-        let vs = arg_slice(v, n, "v")?;
-        let pos = CopyOut::new(n, std::ptr::null_mut())?.buffer(positions, 3, "positions")?;
-        let du = optional_points(du, n, "du")?;
-        let dv = optional_points(dv, n, "dv")?;
-        let mask = optional_out(has_surface, n, 1, "has_surface")?;
+        let args = PointArgs::read(domain, faces, u, v, n, positions, du, dv, has_surface)?;
         let offset = match tolerance_arg(tolerance) {
             None => OffsetSurface::new(m, &opts, s)?,
             Some(t) => crate::construct::shell::offset_within(m, &opts, s, t)?.0,
         };
         let samples: Vec<Option<LimitSample>> = offset
-            .evaluate_points(domain, faces, us, vs)?
+            .evaluate_points(args.domain, args.faces, args.u, args.v)?
             .into_iter()
             .map(|o| o.map(|o| o.offset()))
             .collect();
-        write_marked(&samples, pos, du, dv, mask);
+        args.write(&samples);
         Ok(())
     })
 }

@@ -15,18 +15,39 @@
 //!   the offset crease to the surface crease is `c |m| = c / cos(θ/2)` for a crease whose
 //!   sides turn by θ. A crease turning by more than [`MAX_MITER_TURN_DEG`] is refused: the
 //!   miter would be more than 4 thicknesses long.
+//! - **Next to a crease** the miter is *feathered*. Relative to a side's tangent plane the
+//!   miter has a sideways part `m − nᵢ` of length `tan(θ/2)`: at the crease the inner wall
+//!   starts `c tan(θ/2)` sideways from the surface crease (where the true offsets of the two
+//!   sides meet). Were the crease's neighbours given their plain normals, the crust would
+//!   undo that shift within one face, and a face narrower than about twice the shift (a
+//!   fine crust level, a thick shell) folds. So every vertex within
+//!   [`FEATHER`]` · c tan(θ/2)` (along the mesh's edges) of a crease vertex `x` takes the
+//!   sideways part of `x`'s miter, relative to its own normal `n`, times a weight falling
+//!   linearly from 1 at `x` to 0 at that distance: `n + w (m − (m · n) n)`. Its normal part
+//!   stays 1: the offset is still `c` from the vertex's tangent plane (on a flat side it is
+//!   exactly the true offset, trimmed where the sides meet); only where it lies along the
+//!   side spreads out, so that the crust's sideways slope stays below `1.875 / FEATHER`
+//!   of the surface's. A vertex takes its nearest crease vertex only: where creases meet at
+//!   a corner (three or more sectors) the shifts of two creases do not add up, and a crust
+//!   finer than the miter can still fold there (the fold check names the face).
 //! - **No normal** (the derivatives are parallel at every face corner of the vertex: a
 //!   collapsed control mesh): an error naming the vertex.
 
 use glam::{DMat3, DVec3};
 
 use crate::error::{Error, Result};
-use crate::eval::Evaluator;
+use crate::eval::{Evaluator, LimitSample};
 use crate::math;
 use crate::mesh::Mesh;
+use crate::topology::Level;
 
 /// Largest crease turning angle a miter accepts (its length is then `1 / cos(θ/2)` = 4).
 pub const MAX_MITER_TURN_DEG: f64 = 151.04;
+
+/// The feathering reach over the miter's sideways length `c tan(θ/2)` (see the module doc):
+/// the crust's sideways slope next to a crease is at most `1.875 / FEATHER` (1.875: the
+/// quintic blend's steepest slope over one face).
+pub const FEATHER: f64 = 3.0;
 
 /// Two unit normals closer than this (`1 − n₁ · n₂`) belong to one sector.
 const SAME_SECTOR: f64 = 1e-10;
@@ -38,35 +59,37 @@ const NO_NORMAL: f64 = 1e-12;
 /// The Ptex `(u, v)` of corner `k` of a quad.
 pub const CORNER_UV: [(f64, f64); 4] = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
 
-/// The unit normal at corner `k` of quad `face` of `ev`'s mesh, `None` where the
-/// derivatives are parallel or the face has no surface.
-fn corner_normal(ev: &Evaluator, face: u32, k: usize, diag: f64) -> Result<Option<DVec3>> {
-    if !ev.has_surface(face) {
-        return Ok(None);
-    }
-    let (u, v) = CORNER_UV[k];
-    let s = ev.evaluate(face, u, v)?;
+/// The unit normal of limit sample `s` at a face corner, `None` where the derivatives are
+/// parallel or vanish (relative to `diag`, the mesh's bounding-box diagonal).
+fn corner_normal(s: &LimitSample, diag: f64) -> Option<DVec3> {
     let cross = s.du.cross(s.dv);
     let (a, b) = (s.du.length(), s.dv.length());
     let tiny = NO_NORMAL * diag;
-    Ok(
-        (a > tiny && b > tiny && cross.length() > NO_NORMAL * a * b)
-            .then(|| cross / cross.length()),
-    )
+    (a > tiny && b > tiny && cross.length() > NO_NORMAL * a * b).then(|| cross / cross.length())
 }
 
-/// The unit corner direction `m` (before scaling by the thickness) of every vertex of `ev`'s
-/// quad mesh, in vertex order; a vertex in no face with surface gets the zero vector.
-/// `name` names a vertex in messages.
+/// The corner direction `m` (before scaling by the thickness; `m · n = 1` for the vertex's
+/// normal `n`, and for every sector's at a crease) of every vertex of `ev`'s quad mesh, in
+/// vertex order, feathered next to creases for thickness `thickness` (see the module doc);
+/// a vertex in no face with surface gets the zero vector. `name` names a vertex in messages.
+///
+/// With them, for every vertex, the crease vertex whose miter it carries or is feathered
+/// from (itself at a crease; `None` away from creases): what a fold message names.
 ///
 /// Errors ([`Error::InvalidArgument`]): a vertex with faces but no normal; a crease turning
 /// by more than [`MAX_MITER_TURN_DEG`].
-pub fn corner_directions(ev: &Evaluator, name: &dyn Fn(usize) -> String) -> Result<Vec<DVec3>> {
+pub fn corner_directions(
+    ev: &Evaluator,
+    thickness: f64,
+    name: &dyn Fn(usize) -> String,
+) -> Result<(Vec<DVec3>, Vec<Option<u32>>)> {
     let mesh: &Mesh = ev.mesh();
     let n = mesh.num_vertices();
     let diag = mesh.bounding_box_diagonal();
-    // Per vertex: whether it has a face with surface, and its distinct sector normals.
+    // Per vertex: whether it has a face with surface, its limit position, and its distinct
+    // sector normals.
     let mut has_face = vec![false; n];
+    let mut position = vec![DVec3::ZERO; n];
     let mut sectors: Vec<Vec<DVec3>> = vec![Vec::new(); n];
     for f in 0..mesh.num_faces() {
         let face = mesh.face(f);
@@ -76,14 +99,17 @@ pub fn corner_directions(ev: &Evaluator, name: &dyn Fn(usize) -> String) -> Resu
                 continue;
             }
             has_face[v] = true;
-            if let Some(normal) = corner_normal(ev, f as u32, k, diag)? {
+            let (u, w) = CORNER_UV[k];
+            let sample = ev.evaluate(f as u32, u, w)?;
+            position[v] = sample.position;
+            if let Some(normal) = corner_normal(&sample, diag) {
                 if !sectors[v].iter().any(|s| 1.0 - s.dot(normal) < SAME_SECTOR) {
                     sectors[v].push(normal);
                 }
             }
         }
     }
-    (0..n)
+    let mut directions = (0..n)
         .map(|v| match sectors[v].as_slice() {
             [] if has_face[v] => Err(Error::invalid_argument(format!(
                 "{} has no normal: the limit surface's derivatives are parallel at every face \
@@ -94,7 +120,96 @@ pub fn corner_directions(ev: &Evaluator, name: &dyn Fn(usize) -> String) -> Resu
             [normal] => Ok(*normal),
             normals => miter(normals, || name(v)),
         })
+        .collect::<Result<Vec<DVec3>>>()?;
+    let creases: Vec<bool> = sectors.iter().map(|s| s.len() > 1).collect();
+    let from = feather(ev, &position, &creases, thickness, &mut directions);
+    Ok((directions, from))
+}
+
+/// Feather the miters of the crease vertices (`crease[v]`) into the vertices around them
+/// (see the module doc): each vertex within [`FEATHER`]` · c tan(θ/2)` of its nearest crease
+/// vertex along the mesh's edges (limit positions `position`) gets that miter's sideways
+/// part, relative to its own normal, weighted linearly by distance. Returns the crease
+/// vertex each vertex carries the miter of (itself at a crease).
+fn feather(
+    ev: &Evaluator,
+    position: &[DVec3],
+    crease: &[bool],
+    c: f64,
+    dirs: &mut [DVec3],
+) -> Vec<Option<u32>> {
+    use std::cmp::Reverse;
+    use std::collections::BinaryHeap;
+    let level = Level::from_mesh_with_options(ev.mesh(), ev.options());
+    // The reach of each crease vertex's miter: FEATHER c tan(θ/2), |m|² = 1 + tan²(θ/2).
+    let reaches: Vec<f64> = dirs
+        .iter()
+        .map(|m| FEATHER * c * (m.length_squared() - 1.0).max(0.0).sqrt())
+        .collect();
+    let reach = |x: usize| reaches[x];
+    // Multi-source Dijkstra: distance to and index of the nearest crease vertex.
+    let mut nearest: Vec<Option<(f64, usize)>> = vec![None; position.len()];
+    let mut heap = BinaryHeap::new();
+    for x in (0..position.len()).filter(|&x| crease[x] && reach(x) > 0.0) {
+        nearest[x] = Some((0.0, x));
+        heap.push(Reverse((Ordered(0.0), x, x)));
+    }
+    while let Some(Reverse((Ordered(d), v, x))) = heap.pop() {
+        if nearest[v].is_some_and(|(best, _)| best < d) {
+            continue;
+        }
+        for &e in level.vertex_edges(v) {
+            let [a, b] = level.edge_vertices(e as usize);
+            let w = (if a as usize == v { b } else { a }) as usize;
+            let dw = d + (position[w] - position[v]).length();
+            if crease[w] || dw >= reach(x) || nearest[w].is_some_and(|(best, _)| best <= dw) {
+                continue;
+            }
+            nearest[w] = Some((dw, x));
+            heap.push(Reverse((Ordered(dw), w, x)));
+        }
+    }
+    for (v, near) in nearest.iter().enumerate() {
+        let Some((d, x)) = *near else { continue };
+        if crease[v] {
+            continue;
+        }
+        let (normal, m) = (dirs[v], dirs[x]);
+        let weight = 1.0 - d / reach(x);
+        dirs[v] = normal + (m - normal * m.dot(normal)) * weight;
+    }
+    nearest
+        .iter()
+        .enumerate()
+        .map(|(v, near)| match near {
+            Some((_, x)) => Some(*x as u32),
+            None => crease[v].then_some(v as u32),
+        })
         .collect()
+}
+
+/// A distance ordered for the heap (never NaN: sums of lengths of finite positions).
+#[derive(Debug, Clone, Copy)]
+struct Ordered(f64);
+
+impl PartialEq for Ordered {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other).is_eq()
+    }
+}
+
+impl Eq for Ordered {}
+
+impl PartialOrd for Ordered {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Ordered {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0.total_cmp(&other.0)
+    }
 }
 
 /// The shortest `m` with `m · nᵢ = 1` for the unit normals `normals` (least squares when

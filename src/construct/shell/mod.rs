@@ -29,9 +29,8 @@ pub use thickness::{measure, offset_within, ThicknessReport};
 use crate::construct::{Fitted, Settings};
 use crate::control::Control;
 use crate::error::Result;
-use crate::fit::{fit_cage, FitOptions};
+use crate::fit::FitOptions;
 use crate::mesh::Mesh;
-use std::sync::Arc;
 
 /// The input of a hollow solid: the mesh whose limit surface is the outer wall, and the
 /// offset.
@@ -79,16 +78,6 @@ pub fn build(input: &ShellInput, settings: &Settings) -> Result<Fitted> {
 pub fn hollow_solid(offset: &OffsetSurface, control: &Control) -> Result<Fitted> {
     let (parts, design) = solid::hollow_parts(offset)?;
     let o = offset.fine().options();
-    let fitted = fit_cage(
-        parts,
-        FitOptions::new(o.boundary, o.crease_method),
-        &[],
-        control,
-    )?;
-    Ok(Fitted {
-        mesh: Arc::new(fitted.mesh),
-        targets: fitted.targets,
-        fit: fitted.fit,
-        design,
-    })
+    let options = FitOptions::new(o.boundary, o.crease_method);
+    Fitted::fit_with(parts, options, control, design, &[])
 }

@@ -16,7 +16,7 @@
 use glam::DVec3;
 
 use super::corners::corner_directions;
-use super::crust::crust;
+use super::crust::Crust;
 use crate::error::{Error, Result};
 use crate::eval::ptex::PtexFaces;
 use crate::eval::{Domain, Evaluator, LimitSample};
@@ -133,6 +133,11 @@ pub struct OffsetSurface {
     fine: Evaluator,
     /// The signed corner vector of every vertex of the refined mesh (`O = S − D`).
     corners: Vec<DVec3>,
+    /// The crust of every refined face, from its corner vectors: built once, so a point
+    /// reads one face's coefficients instead of four vertices' vectors.
+    crusts: Vec<Crust>,
+    /// The crease vertex whose miter each refined vertex carries (fold messages).
+    mitered_from: Vec<Option<u32>>,
 }
 
 /// Whether every face of `mesh` is a quad.
@@ -181,9 +186,16 @@ impl OffsetSurface {
             Side::Inward => 1.0,
             Side::Outward => -1.0,
         };
-        let corners = corner_directions(&fine, &name)?
+        let (directions, mitered_from) = corner_directions(&fine, settings.thickness, &name)?;
+        let corners: Vec<DVec3> = directions
             .into_iter()
             .map(|m| m * (sign * settings.thickness))
+            .collect();
+        let crusts = (0..fine_mesh.num_faces())
+            .map(|g| {
+                let f = fine_mesh.face(g);
+                Crust::new(&[0, 1, 2, 3].map(|k| corners[f[k] as usize]))
+            })
             .collect();
         let mut first_child = Vec::with_capacity(mesh.num_faces());
         let mut next = 0u32;
@@ -198,6 +210,8 @@ impl OffsetSurface {
             quad: mesh.face_sizes().iter().map(|&n| n == 4).collect(),
             fine,
             corners,
+            crusts,
+            mitered_from,
         };
         if !settings.accept_folds {
             offset.check_folds()?;
@@ -229,10 +243,13 @@ impl OffsetSurface {
     /// The offset at `(u, v)` of face `face` of the refined mesh (its own parameters),
     /// derivatives multiplied by `scale`.
     pub fn evaluate_fine(&self, face: u32, u: f64, v: f64, scale: f64) -> Result<OffsetSample> {
+        // The crust's coefficients are read before the surface is evaluated: a random face's
+        // two reads miss the cache, and issued first they wait for memory together.
+        // (`black_box` keeps the compiler from moving the read after the evaluation.)
+        let crust = std::hint::black_box(self.crusts.get(face as usize).copied());
         let s = self.fine.evaluate(face, u, v)?;
-        let f = self.fine.mesh().face(face as usize);
-        let d = [0, 1, 2, 3].map(|k| self.corners[f[k] as usize]);
-        let (value, du, dv) = crust(&d, u, v);
+        // (A face out of range failed the evaluation: `crust` is there.)
+        let (value, du, dv) = crust.unwrap_or_default().evaluate(u, v);
         let surface = LimitSample {
             position: s.position,
             du: s.du * scale,
@@ -348,13 +365,27 @@ impl OffsetSurface {
                     // orientation test says nothing.
                     let normal = o.surface.du.cross(o.surface.dv);
                     if normal.length() > 0.0 && o.folds() {
-                        let at = if self.settings.level == 0 {
-                            format!("face {g}")
-                        } else {
-                            format!("face {g} of the mesh refined {} times", self.settings.level)
+                        let refined = match self.settings.level {
+                            0 => String::new(),
+                            l => format!(" of the mesh refined {l} times"),
+                        };
+                        let at = format!("face {g}{refined}");
+                        // Next to a crease the miter's sideways shift is the likely cause.
+                        let face = self.fine.mesh().face(g as usize);
+                        let why = match face.iter().find_map(|&v| self.mitered_from[v as usize]) {
+                            Some(x) => format!(
+                                "next to the crease or corner at vertex {x}{refined}, whose \
+                                 mitered corner vector moves the offset sideways by more than \
+                                 the refined faces there are wide (corners of three or more \
+                                 sectors, sides narrower than the feathering); use a coarser \
+                                 crust level, a smaller thickness,"
+                            ),
+                            None => "the thickness exceeds the radius of curvature on the \
+                                     concave side; use a smaller thickness,"
+                                .to_string(),
                         };
                         return Err(Error::invalid_argument(format!(
-                            "{}; use a smaller thickness, or accept folds",
+                            "{}: {why} or accept folds",
                             fold_message(&at, u, v, self.settings.thickness)
                         )));
                     }
@@ -369,10 +400,7 @@ impl OffsetSurface {
 pub const FOLD_LATTICE: usize = 4;
 
 fn fold_message(at: &str, u: f64, v: f64, c: f64) -> String {
-    format!(
-        "the offset by thickness {c} folds at {at}, (u, v) = ({u}, {v}): (O_u x O_v) . n <= 0, \
-         the thickness exceeds the radius of curvature on the concave side"
-    )
+    format!("the offset by thickness {c} folds at {at}, (u, v) = ({u}, {v}): (O_u x O_v) . n <= 0")
 }
 
 /// The quadrant of `(s, t)` (child `q` of a quad, same orientation) and the coordinates in

@@ -1,10 +1,10 @@
 //! The Catmull–Clark result of an odd-order (dual) blend. Odd orders refine on the
 //! Doo–Sabin split, so no vertex survives a step; instead every face, edge and vertex of
-//! level L has one face of level L + 1 centred on it (a face keeps its index at every level,
-//! [`crate::gbs::DualFaces`] numbers the others). The Catmull–Clark mesh is the quad split of
-//! level L (vertex, next edge, face, previous edge per face corner): each of its vertices
-//! targets the GBS limit at the centre of the level-(L + 1) face on its element, taken as
-//! that face's centroid [`EXTRA_LEVELS`] levels further down (for k = 3 a regular quad's
+//! level L has one face of level L + 1 centred on it (a face keeps its index at every level;
+//! the GBS refinement numbers the others). The Catmull–Clark mesh is the quad split of level L
+//! (vertex, next edge, face, previous edge per face corner): each of its vertices targets the
+//! GBS limit at the centre of the level-(L + 1) face on its element, taken as the centroid of
+//! that face's descendant at level L + 3 + [`EXTRA_LEVELS`] (for k = 3 a regular quad's
 //! centroid is on the limit surface at every level: the tensor product of the curve's edge
 //! midpoints; elsewhere it approaches the limit about 4× per level). Quads at a level-L
 //! boundary vertex or edge are left out: an odd-order boundary is free and has no face there.

@@ -210,12 +210,13 @@ fn pipes_stay_exact_away_from_the_hub() {
 fn centre_and_valleys_move_monotonically() {
     let pipes = star(5, 2.5);
     let steps = [0.0, 0.25, 0.5, 1.0, 2.0];
-    let heights = |order: u32| -> Vec<(f64, f64)> {
+    let heights = |order: u32, columns: usize| -> Vec<(f64, f64)> {
         steps
             .iter()
             .map(|&alpha| {
                 let input = BlendInput {
                     order,
+                    columns,
                     alpha,
                     ..BlendInput::new(pipes.clone())
                 };
@@ -230,12 +231,13 @@ fn centre_and_valleys_move_monotonically() {
             })
             .collect()
     };
-    let valleys = |order: u32| -> Vec<(f64, f64)> {
+    let valleys = |order: u32, columns: usize| -> Vec<(f64, f64)> {
         steps
             .iter()
             .map(|&k_alpha| {
                 let input = BlendInput {
                     order,
+                    columns,
                     k_alpha,
                     ..BlendInput::new(pipes.clone())
                 };
@@ -250,17 +252,17 @@ fn centre_and_valleys_move_monotonically() {
             })
             .collect()
     };
-    for order in [4, 6] {
-        let h = heights(order);
-        let w = valleys(order);
+    for (order, columns) in [(4, 4), (6, 4), (4, 5), (6, 8)] {
+        let h = heights(order, columns);
+        let w = valleys(order, columns);
         for i in 1..steps.len() {
             assert!(
                 h[i].0 > h[i - 1].0 && h[i].1 > h[i - 1].1,
-                "k={order} α: {h:?}"
+                "k={order} n={columns} α: {h:?}"
             );
             assert!(
                 w[i].0 < w[i - 1].0 && w[i].1 < w[i - 1].1,
-                "k={order} k_α: {w:?}"
+                "k={order} n={columns} k_α: {w:?}"
             );
         }
     }

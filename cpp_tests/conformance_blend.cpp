@@ -33,7 +33,10 @@ double worst_distance(const std::vector<double> &a, const std::vector<double> &b
 
 int main() {
     Checker ck("conformance_blend");
-    for (const char *name : {"three_way", "four_way", "six_way", "tee"}) {
+    // Even orders; three_way_n6 of six columns; the Fig. 3-4 six-pipe examples (k = 3: the quad
+    // split of the dual level).
+    for (const char *name : {"three_way", "four_way", "six_way", "tee", "three_way_n6", "six_way_k4_v2",
+                             "six_way_k8_v07", "six_way_k3_v1", "six_way_k3_cos", "six_way_k3_cosh"}) {
         std::string base = std::string(PROFSUBD_BLEND_EXAMPLES) + "/" + name;
         ck.set_context(name);
         OsdShape shape;

@@ -246,6 +246,7 @@ def curves(
 def blend(
     pipes: Sequence[Mapping[str, Any]],
     *,
+    columns: int = 4,
     order: int = 4,
     tension: Optional[float] = None,
     alpha: float = 0.5,
@@ -255,7 +256,8 @@ def blend(
 ) -> Model:
     """N-way blend of pipes by generalized B-spline subdivision, as a fitted Catmull–Clark
     mesh: ``pipes`` a list of ``{"end": (x, y, z), "axis": (x, y, z), "radius": r, "length":
-    l}`` (3 to 8), ``order`` (even, 4..8), ``tension`` (None: the pipes' exact circles),
+    l}`` (3 to 8), ``columns`` (control points round a pipe, 3..16), ``order`` (3..8),
+    ``tension`` (None: the pipes' exact circles, cos(pi/columns)),
     ``alpha`` (centre), ``k_alpha`` (valleys), ``gbs_level`` — the keys of ``profsubd
     blend``'s JSON input; settings ``boundary``, ``crease_method``."""
     rows = []
@@ -267,7 +269,7 @@ def blend(
     arr = points(rows if rows else np.zeros((0, 8)), 8, "pipes")
     t = float("nan") if tension is None else float(tension)
     return build(
-        "profsubd_blend", ptr(arr), len(arr), int(order), t, float(alpha), float(k_alpha), int(gbs_level),
+        "profsubd_blend", ptr(arr), len(arr), int(columns), int(order), t, float(alpha), float(k_alpha), int(gbs_level),
         options=Options(**settings),
     )
 

@@ -18,10 +18,11 @@ impl TakeOptions for BlendInput {
 /// Blend `num_pipes` pipes (3 to 8) at a junction with generalized B-spline subdivision and
 /// fit a Catmull–Clark mesh to the result: `pipes` holds 8 doubles per pipe, the end centre
 /// at the junction (x, y, z), the axis away from it (x, y, z), the radius and the length.
-/// `order` is the GBS order (even, 4..8), `tension` the level-0 tension (NaN: cos(π/4), the
-/// four-column pipes' exact circles), `alpha` and `k_alpha` the centre and valley shape
-/// parameters, `gbs_level` (1..4) the GBS level whose vertices the Catmull–Clark limit
-/// interpolates. The boundary interpolation and crease method come from `options` (may be
+/// `columns` is the number of control points round each pipe (3..16), `order` the GBS
+/// order (3..8), `tension` the level-0 tension (NaN: cos(π/columns), the pipes' exact
+/// circles), `alpha` and `k_alpha` the centre and valley shape parameters, `gbs_level`
+/// (1..4 for even orders, 1..2 for odd) the GBS level whose faces the Catmull–Clark mesh
+/// refines. The boundary interpolation and crease method come from `options` (may be
 /// NULL). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for bad pipes or parameters (the message
 /// says which), `PROFSUBD_ERROR_NUMERICAL` if the fit misses its tolerance.
 #[no_mangle]
@@ -29,6 +30,7 @@ impl TakeOptions for BlendInput {
 pub unsafe extern "C" fn profsubd_blend(
     pipes: *const f64,
     num_pipes: usize,
+    columns: u32,
     order: u32,
     tension: f64,
     alpha: f64,
@@ -48,6 +50,7 @@ pub unsafe extern "C" fn profsubd_blend(
             })
             .collect();
         Ok(BlendInput {
+            columns: columns as usize,
             order,
             tension: (!tension.is_nan()).then_some(tension),
             alpha,
@@ -77,7 +80,8 @@ mod tests {
             profsubd_blend(
                 pipes.as_ptr(),
                 n,
-                4,
+                5,
+                3,
                 f64::NAN,
                 0.3,
                 0.5,

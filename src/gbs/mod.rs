@@ -29,6 +29,7 @@ use crate::error::{Error, Result};
 use crate::mesh::{Mesh, MeshParts};
 use crate::refine::MAX_LEVEL;
 use crate::topology::Level;
+pub(crate) use refine::{dual_faces, DualFaces};
 use rules::{next_tension, MAX_ORDER, MIN_ORDER};
 
 /// Order and level-0 tension of a GBS scheme.

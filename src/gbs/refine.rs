@@ -164,6 +164,39 @@ pub(crate) fn average(level: &Level, p: &[DVec3]) -> Vec<DVec3> {
         .collect()
 }
 
+/// Where the faces of an odd-order step come from: child face `f` is face `f`'s (the same
+/// index at every level), then one per interior edge, then one per interior vertex.
+#[derive(Debug, Clone)]
+pub(crate) struct DualFaces {
+    /// The child face of each edge (`None` on the boundary).
+    pub edge: Vec<Option<u32>>,
+    /// The child face of each vertex (`None` on the boundary).
+    pub vertex: Vec<Option<u32>>,
+}
+
+/// Whether edge `e` gets a face in an odd-order step.
+fn has_edge_face(level: &Level, e: usize) -> bool {
+    level.edge_faces(e).len() == 2
+}
+
+/// The child faces of `level`'s edges and vertices in [`odd_step`]'s numbering.
+pub(crate) fn dual_faces(level: &Level) -> DualFaces {
+    let mut next = level.num_faces() as u32;
+    let mut number = |has: bool| {
+        has.then(|| {
+            next += 1;
+            next - 1
+        })
+    };
+    let edge = (0..level.num_edges())
+        .map(|e| number(has_edge_face(level, e)))
+        .collect();
+    let vertex = (0..level.num_vertices())
+        .map(|v| number(!level.is_vertex_boundary(v)))
+        .collect();
+    DualFaces { edge, vertex }
+}
+
 /// The odd-order step C: one point per face corner (rule [`face_corner`]) and the Doo–Sabin
 /// faces: one per face (its corners in order), one quad per interior edge, one per interior
 /// vertex (its faces' corners, counter-clockwise). Boundary edges and vertices get no face:
@@ -198,7 +231,7 @@ pub(crate) fn odd_step(level: &Level, p: &[DVec3], v: f64) -> Result<(Level, Vec
     };
     for e in 0..level.num_edges() {
         let (ef, el) = (level.edge_faces(e), level.edge_face_local_indices(e));
-        if ef.len() != 2 {
+        if !has_edge_face(level, e) {
             continue;
         }
         let (f1, i1, f2, i2) = (ef[0], el[0] as usize, ef[1], el[1] as usize);

@@ -5,6 +5,7 @@
 
 use glam::DVec3;
 
+use super::dual::build_dual;
 use super::hub::control_mesh;
 use super::input::BlendInput;
 use crate::construct::design::{DesignLattice, LATTICE};
@@ -21,21 +22,19 @@ use crate::topology::Level;
 const LATTICE_LEVELS: u32 = 2;
 
 /// Build the blend: its GBS mesh ([`control_mesh`]), refined `input.gbs_level` times, as a
-/// fitted Catmull–Clark mesh. Errors: those of [`control_mesh`] and [`Fitted::fit`];
-/// [`Error::InvalidArgument`] for an odd order (its dual refinement has no vertex to
-/// interpolate) or `gbs_level` outside 1..=4.
+/// fitted Catmull–Clark mesh (odd orders: [`build_dual`]). Errors: those of
+/// [`control_mesh`] and [`Fitted::fit`]; [`Error::InvalidArgument`] for `gbs_level` outside
+/// 1..=4 (even orders) or 1..=2 (odd orders, which refine four levels further).
 pub fn build(input: &BlendInput, settings: &Settings) -> Result<Fitted> {
-    if input.order % 2 == 1 {
+    let most = if input.order % 2 == 1 { 2 } else { 4 };
+    if !(1..=most).contains(&input.gbs_level) {
         return Err(Error::invalid_argument(format!(
-            "the Catmull-Clark blend takes even orders; order {} is odd",
-            input.order
+            "gbs_level {} is outside 1..={most} for order {}",
+            input.gbs_level, input.order
         )));
     }
-    if !(1..=4).contains(&input.gbs_level) {
-        return Err(Error::invalid_argument(format!(
-            "gbs_level {} is outside 1..=4",
-            input.gbs_level
-        )));
+    if input.order % 2 == 1 {
+        return build_dual(input, settings);
     }
     let blend = control_mesh(input)?;
     let options = input.gbs_options();

@@ -1,27 +1,34 @@
-//! The GBS control mesh of an N-way blend: N four-column pipes and the hub that joins their
+//! The GBS control mesh of an N-way blend: N pipes of n columns and the hub that joins their
 //! ends (after Shen & Fang 2016, §2, whose formulas are lost; the ones here are designed and
 //! documented in the README, "N-way pipe blends").
 //!
 //! The pipes are sorted counter-clockwise round the hub normal `up`. Pipe i's end ring has
-//! the corners TR, TL, BL, BR (top/bottom along `up`, right towards pipe i + 1). The hub:
-//! - top and bottom centres V0 = mean of the ring's top (bottom) corners ± α·ρ̄·up, each
+//! an edge on top, TL–TR (top along `up`, right towards pipe i + 1); from TR and TL a right
+//! and a left arc of s = ⌊(n − 1)/2⌋ edges run down to the bottom edge BR–BL (even n) or to
+//! one bottom vertex B (odd n). The hub:
+//! - top and bottom centres V0 = mean of the top (bottom) valley midpoints ± α·ρ̄·up, each
 //!   split into an N-gon of points C_i = V0 + ⅓(M_i − V0), M_i the midpoint of TR_i and
-//!   TL_{i+1} (BR_i, BL_{i+1}): no vertex of valence N;
-//! - valley points W_i = M_i + k_α·[(A − I) at TR_i + (A − I) at TL_{i+1}]/2, A − I the pipe's
-//!   last row minus the row behind it (top and bottom);
-//! - faces per pipe: a top and a bottom quad on the ring's top (bottom) edge; per valley a
-//!   top and a bottom quad (ring corner, valley, next ring corner, centre point) and two
-//!   side quads joining the pipes' facing side edges through the top and bottom valley.
+//!   TL_{i+1} (bottom: of the arcs' lower ends): no vertex of valence N;
+//! - a column of s + 1 valley points per valley, W_i^m = midpoint of row m of pipe i's right
+//!   arc and pipe i + 1's left arc + k_α·(A − I), A − I the two pipes' mean last row minus
+//!   the row behind it;
+//! - faces per pipe: a quad on the ring's top edge (TL_i, TR_i, C_i, C_{i−1}); per valley a
+//!   top quad (TR_i, W_i^0, TL_{i+1}, C_i) and two strips of s side quads joining the arcs
+//!   through the valley column; at the bottom the mirrored quads (even n), or one pentagon
+//!   per bottom vertex (W_i^s, B_i, W_{i−1}^s, Cb_{i−1}, Cb_i) (odd n).
 //!
-//! Valences: ring corners 5, centre points 4, valley points 3, pipe vertices 4 (2 or 3 on
-//! the free ends).
+//! Valences: ring corners and bottom vertices 5, other arc vertices 4, centre points 4 (3
+//! under odd rings), valley points 3 at the ends of a column and 4 inside it (and at the
+//! bottom of odd rings), pipe vertices 4 (2 or 3 on the free ends).
+
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::DVec3;
 
-use super::input::{BlendInput, Pipe, COLUMNS};
+use super::input::{BlendInput, Pipe};
 use crate::error::{Error, Result};
 use crate::gbs::rules::circle_factor;
-use crate::math::atan2;
+use crate::math::{atan2, cos, sin};
 use crate::mesh::{Mesh, MeshParts};
 
 /// Share of the way from a centre V0 to its valley midpoint at which the centre's N-gon
@@ -41,7 +48,7 @@ pub struct PlacedPipe {
     pub up: DVec3,
     /// Unit vector towards the next pipe, `up × axis`.
     pub side: DVec3,
-    /// Radius of the control rings (the limit cylinder's radius over λ_k(π/2)).
+    /// Radius of the control rings (the limit cylinder's radius over λ_k(2π/n)).
     pub control_radius: f64,
     /// Number of segments along the pipe.
     pub segments: usize,
@@ -61,6 +68,8 @@ pub struct BlendMesh {
     pub up: DVec3,
     /// Index of the first hub (blend) vertex; every vertex from it on is a blend vertex.
     pub first_hub_vertex: usize,
+    /// Valley points per valley, from the top one down.
+    pub valley_rows: usize,
 }
 
 impl BlendMesh {
@@ -68,10 +77,10 @@ impl BlendMesh {
     pub fn centre_vertices(&self) -> std::ops::Range<usize> {
         self.first_hub_vertex..self.first_hub_vertex + 2 * self.pipes.len()
     }
-    /// The N top valley points, then the N bottom ones (vertex indices).
+    /// The valley points, row by row from the top (N per row; vertex indices).
     pub fn valley_vertices(&self) -> std::ops::Range<usize> {
         let n = self.pipes.len();
-        self.first_hub_vertex + 2 * n..self.first_hub_vertex + 4 * n
+        self.first_hub_vertex + 2 * n..self.first_hub_vertex + (2 + self.valley_rows) * n
     }
 }
 
@@ -127,7 +136,15 @@ fn hub_frame(pipes: &[Pipe]) -> Result<(DVec3, Vec<usize>)> {
 pub fn control_mesh(input: &BlendInput) -> Result<BlendMesh> {
     input.validate()?;
     let (up, order) = hub_frame(&input.pipes)?;
-    let lambda = circle_factor(input.order, std::f64::consts::FRAC_PI_2);
+    let columns = input.columns;
+    let lambda = circle_factor(input.order, TAU / columns as f64);
+    // Ring vertex j at angle π/2 − π/n + 2πj/n from the side vector: an edge on top.
+    let ring: Vec<(f64, f64)> = (0..columns)
+        .map(|j| {
+            let phi = FRAC_PI_2 + (2 * j) as f64 * PI / columns as f64 - PI / columns as f64;
+            (cos(phi), sin(phi))
+        })
+        .collect();
     let mut positions = Vec::new();
     let mut placed = Vec::new();
     for &i in &order {
@@ -138,16 +155,12 @@ pub fn control_mesh(input: &BlendInput) -> Result<BlendMesh> {
         let control_radius = pipe.radius / lambda;
         let segments = ((pipe.length / pipe.radius).ceil() as usize).clamp(3, 64);
         let first_vertex = positions.len();
-        let s = std::f64::consts::FRAC_1_SQRT_2;
-        let corners = [
-            (side + pipe_up) * s,
-            (pipe_up - side) * s,
-            (-side - pipe_up) * s,
-            (side - pipe_up) * s,
-        ];
         for r in 0..=segments {
             let c = pipe.end + axis * (pipe.length * r as f64 / segments as f64);
-            positions.extend(corners.iter().map(|&k| c + k * control_radius));
+            positions.extend(
+                ring.iter()
+                    .map(|&(x, y)| c + (side * x + pipe_up * y) * control_radius),
+            );
         }
         placed.push(PlacedPipe {
             input: i,
@@ -162,62 +175,60 @@ pub fn control_mesh(input: &BlendInput) -> Result<BlendMesh> {
     }
     let n = placed.len();
     let first_hub_vertex = positions.len();
-    // Ring corner `j` (0 TR, 1 TL, 2 BL, 3 BR) of pipe `i` and its row-1 neighbour's offset.
-    let corner = |i: usize, j: usize| placed[i].first_vertex + j;
+    // Each side arc runs `s` edges down from the top edge's ends; an odd ring ends both arcs
+    // in one bottom vertex, an even ring in the bottom edge's ends.
+    let s = (columns - 1) / 2;
+    // Left arc of pipe i (down from TL), right arc (down from TR).
+    let left = |i: usize, m: usize| placed[i].first_vertex + 1 + m;
+    let right = |i: usize, m: usize| placed[i].first_vertex + (columns - m) % columns;
     let behind = |i: usize| placed[i].axis * (placed[i].pipe.length / placed[i].segments as f64);
     let mean_radius = placed.iter().map(|p| p.control_radius).sum::<f64>() / n as f64;
-    let mean = |j0: usize, j1: usize| {
-        (0..n)
-            .map(|i| positions[corner(i, j0)] + positions[corner(i, j1)])
-            .sum::<DVec3>()
-            / (2 * n) as f64
-    };
-    let top = mean(0, 1) + up * (input.alpha * mean_radius);
-    let bottom = mean(2, 3) - up * (input.alpha * mean_radius);
-    // Valley midpoints: TR_i with TL_{i+1} (top), BR_i with BL_{i+1} (bottom).
-    let mid = |i: usize, j: usize, k: usize| {
-        (positions[corner(i, j)] + positions[corner((i + 1) % n, k)]) / 2.0
-    };
-    let mut hub = Vec::with_capacity(4 * n);
-    hub.extend((0..n).map(|i| top + (mid(i, 0, 1) - top) * CENTRE_SPLIT));
-    hub.extend((0..n).map(|i| bottom + (mid(i, 3, 2) - bottom) * CENTRE_SPLIT));
-    // A − I = −(axis × row spacing) at every ring corner of a pipe.
+    // Midpoint of row m of valley i: right arc of pipe i with the left arc of pipe i + 1.
+    let mid = |i: usize, m: usize| (positions[right(i, m)] + positions[left((i + 1) % n, m)]) / 2.0;
+    let mean = |m: usize| (0..n).map(|i| mid(i, m)).sum::<DVec3>() / n as f64;
+    let top = mean(0) + up * (input.alpha * mean_radius);
+    let bottom = mean(s) - up * (input.alpha * mean_radius);
+    let mut hub = Vec::with_capacity((s + 3) * n);
+    hub.extend((0..n).map(|i| top + (mid(i, 0) - top) * CENTRE_SPLIT));
+    hub.extend((0..n).map(|i| bottom + (mid(i, s) - bottom) * CENTRE_SPLIT));
+    // A − I = −(axis × row spacing) at every ring vertex of a pipe.
     let push = |i: usize| -(behind(i) + behind((i + 1) % n)) / 2.0 * input.k_alpha;
-    hub.extend((0..n).map(|i| mid(i, 0, 1) + push(i)));
-    hub.extend((0..n).map(|i| mid(i, 3, 2) + push(i)));
+    for m in 0..=s {
+        hub.extend((0..n).map(|i| mid(i, m) + push(i)));
+    }
     positions.extend(hub);
 
     let (ct, cb) = (
         |i: usize| first_hub_vertex + i,
         |i: usize| first_hub_vertex + n + i,
     );
-    let (wt, wb) = (
-        |i: usize| first_hub_vertex + 2 * n + i,
-        |i: usize| first_hub_vertex + 3 * n + i,
-    );
+    let w = |i: usize, m: usize| first_hub_vertex + (2 + m) * n + i;
     let mut faces: Vec<Vec<usize>> = Vec::new();
     for p in &placed {
-        let v = |r: usize, j: usize| p.first_vertex + r * COLUMNS + j % COLUMNS;
+        let v = |r: usize, j: usize| p.first_vertex + r * columns + j % columns;
         for r in 0..p.segments {
-            for j in 0..COLUMNS {
+            for j in 0..columns {
                 faces.push(vec![v(r, j), v(r, j + 1), v(r + 1, j + 1), v(r + 1, j)]);
             }
         }
     }
-    let (tr, tl, bl, br) = (
-        |i: usize| corner(i, 0),
-        |i: usize| corner(i, 1),
-        |i: usize| corner(i, 2),
-        |i: usize| corner(i, 3),
-    );
     for i in 0..n {
         let (next, prev) = ((i + 1) % n, (i + n - 1) % n);
-        faces.push(vec![tl(i), tr(i), ct(i), ct(prev)]);
-        faces.push(vec![tr(i), wt(i), tl(next), ct(i)]);
-        faces.push(vec![tr(i), br(i), wb(i), wt(i)]);
-        faces.push(vec![wt(i), wb(i), bl(next), tl(next)]);
-        faces.push(vec![br(i), bl(i), cb(prev), cb(i)]);
-        faces.push(vec![bl(next), wb(i), br(i), cb(i)]);
+        let (tl, tr) = (left(i, 0), right(i, 0));
+        faces.push(vec![tl, tr, ct(i), ct(prev)]);
+        faces.push(vec![tr, w(i, 0), left(next, 0), ct(i)]);
+        for m in 0..s {
+            faces.push(vec![right(i, m), right(i, m + 1), w(i, m + 1), w(i, m)]);
+            faces.push(vec![w(i, m), w(i, m + 1), left(next, m + 1), left(next, m)]);
+        }
+        if columns % 2 == 0 {
+            let (bl, br) = (left(i, s), right(i, s));
+            faces.push(vec![br, bl, cb(prev), cb(i)]);
+            faces.push(vec![left(next, s), w(i, s), br, cb(i)]);
+        } else {
+            // One bottom vertex per pipe: a pentagon round it, between the two valleys.
+            faces.push(vec![w(i, s), left(i, s), w(prev, s), cb(prev), cb(i)]);
+        }
     }
     faces.push((0..n).map(ct).collect());
     faces.push((0..n).rev().map(cb).collect());
@@ -232,5 +243,6 @@ pub fn control_mesh(input: &BlendInput) -> Result<BlendMesh> {
         pipes: placed,
         up,
         first_hub_vertex,
+        valley_rows: s + 1,
     })
 }

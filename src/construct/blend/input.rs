@@ -6,6 +6,7 @@ use serde::Deserialize;
 
 use crate::error::{Error, Result};
 use crate::gbs::GbsOptions;
+use crate::math::cos;
 
 /// One pipe: a cylinder that starts at the junction and runs away from it.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -21,7 +22,7 @@ pub struct Pipe {
 }
 
 /// Input of the N-way blend. JSON: `{"pipes": [{"end": [x,y,z], "axis": [x,y,z],
-/// "radius": r, "length": l}, ...], "order": 4, "tension": null, "alpha": 0.5,
+/// "radius": r, "length": l}, ...], "columns": 4, "order": 4, "tension": null, "alpha": 0.5,
 /// "k_alpha": 0.5, "gbs_level": 1}` (all keys but `pipes` optional, defaults as
 /// [`BlendInput::new`]), plus the settings keys.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
@@ -29,9 +30,11 @@ pub struct Pipe {
 pub struct BlendInput {
     /// The pipes, 3 to 8, in any order (the blend sorts them round the junction).
     pub pipes: Vec<Pipe>,
+    /// Control points round every pipe's cross-section, [`MIN_COLUMNS`]..=[`MAX_COLUMNS`].
+    pub columns: usize,
     /// GBS order k, 3..=8.
     pub order: u32,
-    /// Level-0 tension; `None` for the pipes' exact-circle tension cos(π/4) (four columns).
+    /// Level-0 tension; `None` for the pipes' exact-circle tension cos(π/columns).
     pub tension: Option<f64>,
     /// Lift of the two centre points off the junction plane, in units of the mean control
     /// radius (≥ 0 domes the centre, 0 leaves it flat).
@@ -58,6 +61,7 @@ struct PipeJson {
 #[serde(deny_unknown_fields)]
 struct BlendJson {
     pipes: Vec<PipeJson>,
+    columns: Option<usize>,
     order: Option<u32>,
     tension: Option<f64>,
     alpha: Option<f64>,
@@ -79,6 +83,7 @@ impl From<BlendJson> for BlendInput {
             .collect();
         let d = BlendInput::new(pipes);
         BlendInput {
+            columns: j.columns.unwrap_or(d.columns),
             order: j.order.unwrap_or(d.order),
             tension: j.tension,
             alpha: j.alpha.unwrap_or(d.alpha),
@@ -89,14 +94,18 @@ impl From<BlendJson> for BlendInput {
     }
 }
 
-/// Number of columns round every pipe: the blend joins four-column ends.
-pub const COLUMNS: usize = 4;
+/// Fewest control points round a pipe.
+pub const MIN_COLUMNS: usize = 3;
+/// Most control points round a pipe.
+pub const MAX_COLUMNS: usize = 16;
 
 impl BlendInput {
-    /// `pipes` with order 4, the exact-circle tension, α = 0.5, k_α = 0.5 and GBS level 1.
+    /// `pipes` with four columns, order 4, the exact-circle tension, α = 0.5, k_α = 0.5 and
+    /// GBS level 1.
     pub fn new(pipes: Vec<Pipe>) -> BlendInput {
         BlendInput {
             pipes,
+            columns: 4,
             order: 4,
             tension: None,
             alpha: 0.5,
@@ -105,16 +114,20 @@ impl BlendInput {
         }
     }
 
-    /// The GBS options: the order and the tension (cos(π/4) unless given).
+    /// The GBS options: the order and the tension (cos(π/columns) unless given: the
+    /// pipes' circles are exact).
     pub fn gbs_options(&self) -> GbsOptions {
         GbsOptions {
             order: self.order,
-            tension: self.tension.unwrap_or(std::f64::consts::FRAC_1_SQRT_2),
+            tension: self
+                .tension
+                .unwrap_or_else(|| cos(std::f64::consts::PI / self.columns as f64)),
         }
     }
 
     /// Check the input. Errors ([`Error::InvalidArgument`]): fewer than 3 or more than 8
-    /// pipes, a radius or length not positive and finite, a zero or non-finite axis or end,
+    /// pipes, columns outside 3..=16, a radius or length not positive and finite, a zero or
+    /// non-finite axis or end,
     /// order or tension out of range, α or k_α not finite, two pipes parallel (same
     /// direction) or with the same end, a pipe pointing into the junction, and two pipes
     /// whose cylinders come closer than the sum of their radii (they would intersect before
@@ -124,6 +137,12 @@ impl BlendInput {
         let n = self.pipes.len();
         if !(3..=8).contains(&n) {
             return bad(format!("a blend joins 3 to 8 pipes, not {n}"));
+        }
+        if !(MIN_COLUMNS..=MAX_COLUMNS).contains(&self.columns) {
+            return bad(format!(
+                "columns {} is outside {MIN_COLUMNS}..={MAX_COLUMNS}",
+                self.columns
+            ));
         }
         self.gbs_options().validate()?;
         if !self.alpha.is_finite() || !self.k_alpha.is_finite() {

@@ -3,6 +3,7 @@
 //! junction ends by a hub of low valence ([`hub`]); the GBS control mesh is
 //! [`control_mesh`]'s, and [`build`] fits a Catmull–Clark mesh to its limit ([`fit`]).
 
+pub mod dual;
 pub mod fit;
 pub mod hub;
 pub mod input;

@@ -155,10 +155,23 @@ fn report_kinds(what: &str, worst: [f64; 3]) {
 fn sweeps_commute_with_translation_rotation_and_scaling() {
     let examples = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/sweeps");
     let mut worst = [0.0f64; 3];
-    for name in ["handrail", "torus_knot_tube"] {
-        let (input, settings): (SweepInput, Settings) =
-            profsubd::construct::settings::read_json(&examples.join(format!("{name}.json")))
-                .unwrap();
+    let mut cases: Vec<(SweepInput, Settings)> = ["handrail", "torus_knot_tube"]
+        .iter()
+        .map(|name| read_json(&examples.join(format!("{name}.json"))).unwrap())
+        .collect();
+    // A polyline (every point a corner, no curvature) under the fixed frame: its sections
+    // are oriented by the first corner's turn; found by this test (#17 item 7), 4.1e-4 of
+    // its size under rotation before (a world axis).
+    let mut polyline = cases[0].clone();
+    polyline.0.trajectory = vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.3, 0.1],
+        [2.0, 0.2, 0.5],
+        [3.0, -0.1, 0.4],
+    ];
+    polyline.0.frame = serde_json::from_str("\"fixed\"").unwrap();
+    cases.push(polyline);
+    for (input, settings) in cases {
         let base = sweep::build(&input, &settings).unwrap();
         let with = |f: &dyn Fn([f64; 3]) -> [f64; 3], s: f64| {
             let mut i = input.clone();

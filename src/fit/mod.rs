@@ -289,8 +289,7 @@ fn krylov(
     for j in [0usize, 1, 2] {
         let b: Vec<f64> = d.iter().map(|p| p[j]).collect();
         let third = control.stage(j as f64 / 3.0, (j + 1) as f64 / 3.0);
-        let Some((x, its)) = bicgstab_column(a, &inv_diag, &b, stop, stop * POLISH, &third)?
-        else {
+        let Some((x, its)) = bicgstab_column(a, &inv_diag, &b, stop, stop * POLISH, &third)? else {
             return Ok(None);
         };
         iterations = iterations.max(its);

@@ -84,26 +84,35 @@ impl BlendMesh {
     }
 }
 
+/// Share of the largest axis cross product within which a pair of pipes counts as spanning
+/// the hub plane as well as the best: the first such pair (in input order) gives the
+/// reference normal, so that rounding noise between equally good pairs (the axes of a
+/// rotated input) cannot flip it (#17 item 7).
+const SEED_TIE: f64 = 1e-9;
+
 /// The hub normal and the pipes' order round it: the normal of the plane the axes spread
-/// in (sum of consecutive cross products), the pipes sorted counter-clockwise.
+/// in (sum of consecutive cross products), the pipes sorted counter-clockwise from the
+/// input's first pipe. Both depend only on the axes' relative directions, so a rotated
+/// input gives the rotated mesh with the same vertex numbering.
 fn hub_frame(pipes: &[Pipe]) -> Result<(DVec3, Vec<usize>)> {
     let axes: Vec<DVec3> = pipes.iter().map(|p| p.axis.normalize()).collect();
     let n = axes.len();
-    let mut seed = DVec3::ZERO;
-    for i in 0..n {
-        for j in i + 1..n {
-            let c = axes[i].cross(axes[j]);
-            if c.length() > seed.length() {
-                seed = c;
-            }
-        }
-    }
-    let seed = seed.normalize();
+    let axes_ref = &axes;
+    let pairs =
+        || (0..n).flat_map(move |i| (i + 1..n).map(move |j| axes_ref[i].cross(axes_ref[j])));
+    let largest = pairs().map(|c| c.length()).fold(0.0, f64::max);
+    let seed = pairs()
+        .find(|c| c.length() >= largest * (1.0 - SEED_TIE))
+        .unwrap_or(DVec3::ZERO)
+        .normalize();
     let e1 = seed.any_orthonormal_vector();
     let e2 = seed.cross(e1);
     let angle = |d: DVec3| atan2(d.dot(e2), d.dot(e1));
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| angle(axes[a]).total_cmp(&angle(axes[b])));
+    // `e1` depends on the world frame; the cyclic order does not: start it at pipe 0.
+    let first = order.iter().position(|&i| i == 0).unwrap_or(0);
+    order.rotate_left(first);
     let up = (0..n)
         .map(|i| axes[order[i]].cross(axes[order[(i + 1) % n]]))
         .sum::<DVec3>()

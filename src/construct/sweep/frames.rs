@@ -20,7 +20,8 @@
 //!   & Liu (2008), "Computation of rotation minimizing frames", ACM TOG 27(1), with global
 //!   error O(h⁴). The start normal is the Frenet normal at the first sample where the
 //!   curvature is defined (carried back along the curve), so that on a circle or a planar
-//!   curve all three moving frames agree; a straight trajectory starts from the world axis
+//!   curve all three moving frames agree; a trajectory without curvature starts from the
+//!   first corner's turn direction (carried back), and a straight one from the world axis
 //!   least aligned with its direction. On a closed trajectory the frame comes back rotated by
 //!   the *closing twist* `φ`; frame `i` is turned by `φ·s_i/L` (arc length `s_i`) so that it
 //!   closes exactly, with the twist spread uniformly.
@@ -39,6 +40,9 @@ use crate::error::{Error, Result};
 /// Curvature below which the Frenet normal is undefined, relative to `1/L` (`L` the trajectory
 /// length): `κ·L ≤ 1e-7`.
 pub const FRENET_MIN_CURVATURE: f64 = 1e-7;
+
+/// Sine of the smallest turn at a corner that gives a polyline trajectory its start normal.
+const CORNER_MIN_TURN: f64 = 1e-9;
 
 /// Smallest cosine allowed between a tangent and the start tangent with a fixed frame.
 pub const FIXED_MIN_COS: f64 = 1e-3;
@@ -279,10 +283,27 @@ fn rmf_normals(points: &[FramePoint], r0: DVec3) -> Vec<DVec3> {
 /// Start normal for rotation-minimizing and fixed frames, see the module documentation.
 fn start_normal(points: &[FramePoint], frenet_at: &dyn Fn(&FramePoint) -> Option<DVec3>) -> DVec3 {
     let t0 = points[0].tangent;
-    let Some(k) = points.iter().position(|p| frenet_at(p).is_some()) else {
+    // Without curvature anywhere, the first corner's turn direction (a polyline's own
+    // normal), so that a rotated polyline gets the rotated frames; only a straight line falls
+    // back to a world axis (#17 item 7: the world axis turned a polyline's sections by up to
+    // 4e-4 of its size under rotation).
+    let turn = |p: &FramePoint| {
+        let out = p.tangent_after();
+        let n = out - out.dot(p.tangent) * p.tangent;
+        (n.length() > CORNER_MIN_TURN).then(|| n.normalize())
+    };
+    let found = points
+        .iter()
+        .position(|p| frenet_at(p).is_some())
+        .map(|k| (k, frenet_at(&points[k])))
+        .or_else(|| {
+            let k = points.iter().position(|p| turn(p).is_some())?;
+            Some((k, turn(&points[k])))
+        });
+    let Some((k, normal)) = found else {
         return any_perpendicular(t0);
     };
-    let mut r = frenet_at(&points[k]).unwrap_or_else(|| any_perpendicular(t0));
+    let mut r = normal.unwrap_or_else(|| any_perpendicular(t0));
     for j in (1..=k).rev() {
         r = transport_back(points, j, j - 1, r);
     }

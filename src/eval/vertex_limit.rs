@@ -67,24 +67,23 @@ pub struct VertexLimitStencils {
 /// Errors ([`crate::Error::NumericalFailure`]): a dart's subdivision matrix is degenerate
 /// (not seen with OpenSubdiv's rules).
 pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTable> {
-    limit_stencils_with(mesh, options, 0, &Control::NONE)
+    limit_stencils_with(mesh, options, &Control::NONE)
 }
 
-/// [`limit_stencils`] on `threads` threads (0: all cores), reporting to `control` each
-/// vertex (the fit's first stage). Contiguous ranges of vertices, one per thread, are joined
+/// [`limit_stencils`] on `control`'s threads ([`Control::threads`], 0: all cores), reporting
+/// to `control` each vertex (the fit's first stage). Contiguous ranges of vertices, one per thread, are joined
 /// in vertex order: the table is the one-thread table bit for bit. The first range reports
 /// (its fraction stands for the whole: the ranges are equal); a cancel there stops the
 /// others at their next vertex.
 pub(crate) fn limit_stencils_with(
     mesh: &Mesh,
     options: &SubdivOptions,
-    threads: usize,
     control: &Control,
 ) -> Result<StencilTable> {
     let level = Level::from_mesh_with_options(mesh, options);
     let surface = vertices_with_surface_in(&level);
     let cancelled = AtomicBool::new(false);
-    let parts = super::parallel::map_ranges(mesh.num_vertices(), threads, |range| {
+    let parts = super::parallel::map_ranges(mesh.num_vertices(), control.threads(), |range| {
         let mut table = StencilTable::new();
         let (first, len) = (range.start == 0, range.len());
         for v in range {

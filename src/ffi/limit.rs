@@ -67,7 +67,7 @@ pub unsafe extern "C" fn profsubd_limit_stencils_new(
         use profsubd_limit_quantity::*;
         let table = match quantity {
             q if q == PROFSUBD_LIMIT_POSITION as i32 => {
-                limit_stencils_with(m, &opts, threads, &Control::NONE)?
+                limit_stencils_with(m, &opts, &Control::NONE.with_threads(threads))?
             }
             q if q == PROFSUBD_LIMIT_DU as i32 => vertex_limit_stencils(m, &opts)?.du,
             q if q == PROFSUBD_LIMIT_DV as i32 => vertex_limit_stencils(m, &opts)?.dv,

@@ -269,12 +269,8 @@ struct OsdOmp {
     int ncoarse = 0;
 
     OsdOmp(const profsubd_test::OsdShape &shape, const profsubd_test::FacePoints &pts) {
-        refiner = profsubd_test::build_refiner(shape);
-        Far::PatchTableFactory::Options po;
-        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
-        refiner->RefineAdaptive(po.GetRefineAdaptiveOptions());
-        table.reset(Far::PatchTableFactory::Create(*refiner, po));
-        map.reset(new Far::PatchMap(*table));
+        std::vector<profsubd_test::FarPoint> unused;  // Far's double points: Osd makes its own
+        far_build(shape, refiner, table, map, unused);
         Far::StencilTableFactory::Options so;
         so.generateIntermediateLevels = true;
         std::unique_ptr<const Far::StencilTable> refined(Far::StencilTableFactory::Create(*refiner, so));

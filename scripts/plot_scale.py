@@ -39,6 +39,8 @@ def read_rows(path):
             if not line.startswith("row "):
                 continue
             cells = line.replace("|", " ").split()
+            if not cells[2].isdigit():
+                continue  # the column header
             family, faces = cells[1], int(cells[2])
             v = [float(x) for x in cells[3:]]
             times = {

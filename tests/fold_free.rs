@@ -292,3 +292,37 @@ fn capped_ellipsoid_wedges_do_not_fold() {
         );
     }
 }
+
+#[test]
+fn random_partial_turns_are_fold_free_or_refused() {
+    // The same generator, partial turns of 90°, 180° or 270°, open or with flat caps: every
+    // turn built has no fold (its interpolating fit, or, where that folds, the refit with
+    // faired pole sectors), and the rest are refused with InvalidArgument.
+    let mut random = RandomProfiles::new();
+    let (mut built, mut refused) = (0, Vec::new());
+    for draw in 0..40 {
+        let pts = random.profile();
+        let mut input = RevolveInput::new(pts);
+        input.angle_deg = [90.0, 180.0, 270.0][(random.next() * 3.0) as usize];
+        let mut settings = Settings::default();
+        if random.next() < 0.5 {
+            settings.caps = profsubd::Caps::Flat;
+        }
+        input.samples_around = 4 * (2 + (random.next() * 6.0) as usize);
+        input.samples_profile = 4 + (random.next() * 28.0) as usize;
+        match revolve::build(&input, &settings) {
+            Ok(s) => {
+                let r = s.surface_report().unwrap();
+                assert_eq!(r.folded_faces, 0, "{input:?}: {r:?}");
+                built += 1;
+            }
+            Err(profsubd::Error::InvalidArgument(m)) => {
+                println!("#{draw}: {m}");
+                refused.push(draw);
+            }
+            Err(e) => panic!("{input:?}: {e}"),
+        }
+    }
+    println!("built {built}, refused {refused:?}");
+    assert!(built >= 30, "{built}");
+}

@@ -10,7 +10,7 @@ use crate::construct::settings::Settings;
 use crate::error::{Error, Result};
 use crate::eval::folds::{find_folds, FoldSettings};
 use crate::eval::Evaluator;
-use crate::fit::{fit_cage, FitReport, FittedCage};
+use crate::fit::{fit_cage, FitReport, FittedCage, Role};
 use crate::mesh::{Mesh, MeshParts};
 
 /// Folded faces named in a refusal's message; the count says how many there are in all.
@@ -50,19 +50,21 @@ impl Fitted {
         Fitted::fit_free(parts, settings, design, &[])
     }
 
-    /// [`Fitted::fit`], except that the vertices flagged in `free` (empty: none) are not
-    /// data points: no data constrain the surface there (inside a flat cap, whose creased
-    /// rim carries its shape), so they keep their cage positions as control points, and
-    /// their limit positions become their targets. An interpolating fit would bend the cap
-    /// to pass through them, overshooting in-plane where the layout's cells change size.
+    /// [`Fitted::fit`], except for the vertices whose `roles` (empty: none) are not
+    /// [`Role::Interpolate`]: they are not data points, and their limit positions become
+    /// their targets. [`Role::Keep`]: no data constrain the surface there (inside a flat
+    /// cap, whose creased rim carries its shape), so they keep their cage positions as
+    /// control points (an interpolating fit would bend the cap to pass through them,
+    /// overshooting in-plane where the layout's cells change size). [`Role::Fair`]: their
+    /// control points minimise the net's bending energy ([`crate::fit::bending`]).
     pub(crate) fn fit_free(
         parts: MeshParts,
         settings: &Settings,
         design: DesignLattice,
-        free: &[bool],
+        roles: &[Role],
     ) -> Result<Fitted> {
         let FittedCage { mesh, targets, fit } =
-            fit_cage(parts, settings.fit_options(), free, &settings.control)?;
+            fit_cage(parts, settings.fit_options(), roles, &settings.control)?;
         Ok(Fitted {
             mesh: Arc::new(mesh),
             targets,

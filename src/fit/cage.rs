@@ -8,7 +8,7 @@
 
 use glam::DVec3;
 
-use super::{fit_limit, FitReport};
+use super::{fit_limit, FitReport, Role};
 use crate::control::Control;
 use crate::error::{Error, Result};
 use crate::eval::vertices_with_surface;
@@ -72,12 +72,13 @@ pub struct FittedCage {
 /// boundary interpolation *none* leaves vertices without a limit surface (see
 /// [`check_limit_exists`]).
 ///
-/// `fixed` (empty, or one flag per vertex): vertices that keep their position as control
-/// point instead ([`fit_limit`]); their limit positions become their data points.
+/// `roles` (empty, or one per vertex): vertices that keep their position as control point
+/// or are faired instead of interpolated ([`fit_limit`]); their limit positions become
+/// their data points.
 pub fn fit_cage(
     mut parts: MeshParts,
     options: FitOptions,
-    fixed: &[bool],
+    roles: &[Role],
     control: &Control,
 ) -> Result<FittedCage> {
     control.report(0.0)?;
@@ -90,7 +91,7 @@ pub fn fit_cage(
         &cage,
         &resolved,
         cage.positions(),
-        fixed,
+        roles,
         &control.stage(0.1, 1.0),
     )?;
     Ok(FittedCage { mesh, targets, fit })

@@ -17,8 +17,10 @@
 //! thread, bit for bit.
 //!
 //! [`cage`]: the constructions' shared entry point, which tags a cage with its subdivision
-//! options and fits it under them.
+//! options and fits it under them. [`bending`]: the fairness term for vertices without data
+//! ([`Role::Fair`]).
 
+pub mod bending;
 pub mod cage;
 
 pub use cage::{fit_cage, FitOptions, FittedCage};
@@ -39,6 +41,21 @@ use crate::options::SubdivOptions;
 /// Relative tolerance of [`fit_limit`]: residual ≤ this × the data points' bounding-box
 /// diagonal.
 pub const RELATIVE_TOLERANCE: f64 = 1e-10;
+
+/// What the fit asks of one vertex.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Role {
+    /// Its limit position is its data point (the default).
+    #[default]
+    Interpolate,
+    /// It keeps its data point as its control point (a flat cap's inside, whose shape its
+    /// creased rim and its plane carry).
+    Keep,
+    /// No data constrain it: its control point is where the control net's bending energy
+    /// is stationary with respect to it ([`bending::Umbrella::energy_row`]), given the
+    /// other control points.
+    Fair,
+}
 
 /// A square sparse matrix in compressed rows: row `i` has weights `weights[offsets[i]..
 /// offsets[i+1]]` on columns `indices[..]` (the layout of a limit stencil table).
@@ -516,11 +533,14 @@ impl<'a> From<&'a StencilTable> for CsrRef<'a> {
 
 /// Move the control points of `mesh` so that the exact limit position of vertex `i` (under
 /// `options`, with the mesh's creases and corners) is `targets[i]`, to a residual ≤
-/// [`RELATIVE_TOLERANCE`] × the targets' bounding-box diagonal; except that a vertex with
-/// `fixed[i]` (`fixed` empty: none) keeps `targets[i]` as its control point (its row of the
-/// system is the identity), where the data leave the surface free (a flat cap's inside).
+/// [`RELATIVE_TOLERANCE`] × the targets' bounding-box diagonal; except where `roles[i]`
+/// (`roles` empty: every vertex [`Role::Interpolate`]) says otherwise: a [`Role::Keep`]
+/// vertex keeps `targets[i]` as its control point (its row of the system is the identity),
+/// where the data leave a flat surface free (a flat cap's inside); a [`Role::Fair`] vertex
+/// has no data, and its row is the control net's bending energy made stationary with respect
+/// to it ([`bending`]; its target only serves the condition estimate's spacing).
 /// Topology and tags are kept. Returns the fitted mesh, every vertex's limit position (the
-/// targets, with the fixed vertices' limits in their place) and the report.
+/// targets, with the kept and faired vertices' limits in their place) and the report.
 ///
 /// The report's condition estimate ([`FitReport::condition`]) is `κ × diagonal / spacing`:
 /// `spacing` the smallest distance between the targets of two vertices joined by an edge,
@@ -542,14 +562,14 @@ pub fn fit_limit(
     mesh: &Mesh,
     options: &SubdivOptions,
     targets: &[DVec3],
-    fixed: &[bool],
+    roles: &[Role],
     control: &Control,
 ) -> Result<(Mesh, Vec<DVec3>, FitReport)> {
-    if targets.len() != mesh.num_vertices() || !(fixed.is_empty() || fixed.len() == targets.len()) {
+    if targets.len() != mesh.num_vertices() || !(roles.is_empty() || roles.len() == targets.len()) {
         return Err(Error::invalid_argument(format!(
-            "{} targets ({} fixed flags) for a mesh of {} vertices",
+            "{} targets ({} roles) for a mesh of {} vertices",
             targets.len(),
-            fixed.len(),
+            roles.len(),
             mesh.num_vertices()
         )));
     }
@@ -579,23 +599,59 @@ pub fn fit_limit(
         return Err(refuse(geometric));
     }
     let limit = limit_stencils_with(mesh, options, &control.stage(0.0, 0.3))?;
-    // A fixed vertex's row is the identity: it keeps its position as control point.
-    let is_fixed = |i: usize| fixed.get(i).copied().unwrap_or(false);
+    let role = |i: usize| roles.get(i).copied().unwrap_or_default();
+    let umbrella = roles
+        .contains(&Role::Fair)
+        .then(|| bending::Umbrella::new(mesh));
     let mut system = StencilTable::new();
-    for i in 0..targets.len() {
+    let mut rhs = targets.to_vec();
+    for (i, rhs) in rhs.iter_mut().enumerate() {
         let (a, b) = (limit.offsets[i] as usize, limit.offsets[i + 1] as usize);
-        if is_fixed(i) {
-            system.indices.push(i as u32);
-            system.weights.push(1.0);
-        } else {
-            system.indices.extend_from_slice(&limit.indices[a..b]);
-            system.weights.extend_from_slice(&limit.weights[a..b]);
+        match (role(i), &umbrella) {
+            // A kept vertex's row is the identity: it keeps its position as control point.
+            (Role::Keep, _) => {
+                system.indices.push(i as u32);
+                system.weights.push(1.0);
+            }
+            (Role::Fair, Some(u)) => {
+                // The bending energy of the net's offset from the data points (the design
+                // surface's samples): tangentially the control points stay where the
+                // layout put them, and the offset the interpolation needs spreads smoothly.
+                *rhs = DVec3::ZERO;
+                for (j, w) in u.energy_row(i) {
+                    system.indices.push(j);
+                    system.weights.push(w);
+                    *rhs += targets[j as usize] * w;
+                }
+            }
+            _ => {
+                system.indices.extend_from_slice(&limit.indices[a..b]);
+                system.weights.extend_from_slice(&limit.weights[a..b]);
+            }
         }
         system.offsets.push(system.indices.len() as u32);
     }
     let tolerance = RELATIVE_TOLERANCE * diagonal;
     let a: CsrRef<'_> = (&system).into();
-    let (x, mut report) = solve(a, targets, tolerance, &control.stage(0.3, 1.0))?;
+    let (x, mut report) = if umbrella.is_some() {
+        // Solved for the offset from the data points: the faired rows make the system
+        // stiffer, and from the data points the residual starts at the interpolation's
+        // small offsets instead of the model's size.
+        let start = a.apply(targets);
+        let offset_rhs: Vec<DVec3> = rhs.iter().zip(&start).map(|(r, s)| *r - *s).collect();
+        let (y, mut report) = solve(a, &offset_rhs, tolerance, &control.stage(0.3, 1.0))?;
+        let x: Vec<DVec3> = targets.iter().zip(&y).map(|(t, y)| *t + *y).collect();
+        report.residual = residual(a, &x, &rhs);
+        if report.residual.is_nan() || report.residual > tolerance {
+            return Err(Error::NumericalFailure(format!(
+                "faired fit reached residual {:e}, above the tolerance {tolerance:e}",
+                report.residual
+            )));
+        }
+        (x, report)
+    } else {
+        solve(a, &rhs, tolerance, &control.stage(0.3, 1.0))?
+    };
     let centre = (lo + hi) * 0.5;
     let spread = |p: &[DVec3]| p.iter().map(|p| (*p - centre).length()).fold(0.0, f64::max);
     let norm = (0..a.rows())
@@ -613,7 +669,10 @@ pub fn fit_limit(
     }
     let limits = CsrRef::from(&limit).apply(&x);
     let reached = (0..targets.len())
-        .map(|i| if is_fixed(i) { limits[i] } else { targets[i] })
+        .map(|i| match role(i) {
+            Role::Interpolate => targets[i],
+            Role::Keep | Role::Fair => limits[i],
+        })
         .collect();
     let mut parts = mesh.parts().clone();
     parts.positions = x;
@@ -695,7 +754,7 @@ mod tests {
     }
 
     /// A 60 × 60 grid (3,721 vertices: several ranges of limit stencils per thread) with a
-    /// wavy height, a semi-sharp crease line and a fixed vertex: the fit and its stencils on
+    /// wavy height, a semi-sharp crease line, a kept and a faired vertex: the fit and its stencils on
     /// 2, 3 and 7 threads (and all cores) are those of one thread, bit for bit.
     #[test]
     fn the_fit_on_several_threads_is_the_fit_on_one() {
@@ -711,14 +770,15 @@ mod tests {
         let mesh = Mesh::from_parts(parts).unwrap();
         let options = SubdivOptions::default();
         let targets = mesh.positions().to_vec();
-        let mut fixed = vec![false; targets.len()];
-        fixed[100] = true;
+        let mut roles = vec![Role::Interpolate; targets.len()];
+        roles[100] = Role::Keep;
+        roles[1500] = Role::Fair;
         let on = |threads: usize| Control::NONE.with_threads(threads);
-        let one = fit_limit(&mesh, &options, &targets, &fixed, &on(1)).unwrap();
+        let one = fit_limit(&mesh, &options, &targets, &roles, &on(1)).unwrap();
         let stencils = limit_stencils_with(&mesh, &options, &on(1)).unwrap();
         assert!(one.2.residual <= one.2.tolerance && one.0.positions() != mesh.positions());
         for threads in [0, 2, 3, 7] {
-            let many = fit_limit(&mesh, &options, &targets, &fixed, &on(threads));
+            let many = fit_limit(&mesh, &options, &targets, &roles, &on(threads));
             assert_eq!(many.unwrap(), one, "{threads} threads");
             let table = limit_stencils_with(&mesh, &options, &on(threads)).unwrap();
             assert_eq!(table, stencils, "{threads} threads");

@@ -43,13 +43,14 @@ use std::f64::consts::TAU;
 
 use glam::{DVec2, DVec3};
 
-use crate::construct::design::{parts_lattice, Design, DesignCoord, DesignLattice};
+use crate::construct::design::{parts_lattice, Design, DesignLattice};
 use crate::construct::equidistribute::place_samples;
 use crate::construct::fitted::Fitted;
 use crate::construct::grid_mesh::{grid_mesh_coords, GridEnd, SweepGrid};
 use crate::construct::pole_cap::{cap_depths, grid_cap_depth};
 use crate::construct::settings::{Caps, Settings};
 use crate::error::{Error, Result};
+use crate::fit::Role;
 use crate::mesh::MeshParts;
 pub use input::RevolveInput;
 pub use profile::{cap_point, revolve_point, RevolvedProfile};
@@ -92,7 +93,7 @@ impl RevolveInput {
 
     /// [`RevolveInput::cage`], and which vertices are free of data (the flat meridian caps'
     /// inside and axis, [`wedge`]): the fit keeps them as control points.
-    fn layout(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice, Vec<bool>)> {
+    fn layout(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice, Vec<Role>)> {
         let profile = self.profile_curve(settings)?;
         let (grid, ring_s) = self.rings(settings, &profile)?;
         let design = RevolveDesign {
@@ -102,17 +103,15 @@ impl RevolveInput {
             step: self.angle_deg.to_radians() / self.samples_around as f64,
             period: self.full_turn().then_some(self.samples_around as f64),
         };
-        let (parts, coords) = if self.full_turn() {
-            grid_mesh_coords(&grid, &|end, v| design.cap(end, v.radius, TAU * v.turn))?
+        let (parts, coords, roles) = if self.full_turn() {
+            let (parts, coords) =
+                grid_mesh_coords(&grid, &|end, v| design.cap(end, v.radius, TAU * v.turn))?;
+            (parts, coords, Vec::new())
         } else {
             wedge_parts(self, settings, &profile, &grid, &ring_s)?
         };
         let lattice = parts_lattice(&parts, &coords, &design);
-        let free = coords
-            .iter()
-            .map(|c| matches!(c, DesignCoord::Planar))
-            .collect();
-        Ok((parts, lattice, free))
+        Ok((parts, lattice, roles))
     }
 
     /// Check the end kinds against the angle, the caps and `samples_around`.
@@ -306,13 +305,30 @@ impl Design for RevolveDesign<'_> {
 /// passes through every data point. Errors: those of [`RevolveInput::cage`]
 /// ([`Error::InvalidArgument`] for bad input or settings) and of the fit; and, for a partial
 /// turn, [`Error::InvalidArgument`] if its limit surface folds (the wedge layouts are not
-/// fold-free for every profile and sampling, [`wedge`]; checked by the fold check).
+/// fold-free for every profile and sampling, [`wedge`]; checked by the fold check). A
+/// partial turn whose interpolating fit folds is fitted once more with its pole sectors'
+/// inner vertices faired instead of interpolated (those points are then not interpolated:
+/// `targets` holds their limit positions), and refused only if that folds too.
 pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
-    let (parts, design, free) = input.layout(settings)?;
-    let fitted = Fitted::fit_free(parts, settings, design, &free)?;
+    let (parts, design, roles) = input.layout(settings)?;
     if input.full_turn() {
-        return Ok(fitted);
+        return Fitted::fit_free(parts, settings, design, &roles);
     }
+    // Interpolate every data point first; only where that folds are the pole sectors'
+    // inner data points released and their control points faired ([`wedge`]).
+    let interpolating: Vec<Role> = roles
+        .iter()
+        .map(|&r| match r {
+            Role::Fair => Role::Interpolate,
+            r => r,
+        })
+        .collect();
+    let first = Fitted::fit_free(parts.clone(), settings, design.clone(), &interpolating)?;
+    let fitted = if first.surface_report()?.folded_faces == 0 || interpolating == roles {
+        first
+    } else {
+        Fitted::fit_free(parts, settings, design, &roles)?
+    };
     fitted.refuse_folds(
         &format!(
             "partial revolution ({}°, {} x {} samples)",

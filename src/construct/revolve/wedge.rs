@@ -62,6 +62,12 @@
 //! at their layout positions as control points (`Fitted::fit_free`), so the cap's inside is
 //! the limit of the unfolded planar grid rather than an interpolant bent through every grid
 //! point (which overshot in the plane where the cells change size, and folded).
+//!
+//! *Faired pole sectors.* A pole sector's inner vertices (off its ring, its boundary radial
+//! lines and every crease) are marked `Role::Fair`: where the interpolating fit of the turn
+//! folds (the sector's `k` small cells against one long profile interval), `super::build`
+//! fits again with those data points released and their control points faired
+//! (`fit::bending`), the rest still interpolated.
 
 use std::collections::HashSet;
 use std::f64::consts::{PI, TAU};
@@ -74,6 +80,7 @@ use crate::construct::design::DesignCoord;
 use crate::construct::grid_mesh::{grid_mesh_coords, GridEnd, SweepGrid};
 use crate::construct::settings::{Caps, Settings};
 use crate::error::{Error, Result};
+use crate::fit::Role;
 use crate::mesh::{Corner, Crease, MeshParts, SHARPNESS_INFINITE};
 
 /// Shares of the chord-length fraction tried, in turn, in the axis spacing of a meridian cap
@@ -90,6 +97,8 @@ struct Sector {
     radials: [Vec<u32>; 2],
     /// The ring position (meridian column) of its bisector if that is creased.
     creased_column: Option<usize>,
+    /// Its vertices off the ring and off the two boundary radial lines.
+    inner: Vec<u32>,
 }
 
 /// Largest span (radians, 150°) left between two creases at a sector's apex: the corner rule
@@ -296,10 +305,14 @@ impl Wedge {
                 self.crease(e[0], e[1]);
             }
         }
+        let boundary: HashSet<u32> = radials[0].iter().chain(&radials[2]).copied().collect();
         Sector {
             apex,
             radials: [radials[0].clone(), radials[2].clone()],
             creased_column: bisector.then_some(2 * k),
+            inner: (apex..self.parts.positions.len() as u32)
+                .filter(|v| !boundary.contains(v))
+                .collect(),
         }
     }
 
@@ -670,7 +683,10 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 /// The mesh parts of a partial revolution: the side from `grid` (rings of
 /// `samples_around + 1` data points, `ring_s` their profile parameters), sectors at poles and
 /// (with caps) at flat ends, and meridian caps (see the module documentation); and the
-/// vertices' design coordinates (sectors as caps, meridian caps planar).
+/// vertices' design coordinates (sectors as caps, meridian caps planar), and what the fit
+/// asks of each vertex: a meridian cap's inside and axis keep their layout positions
+/// (`Role::Keep`); a pole sector's inner vertices off creases are faired (`Role::Fair`,
+/// see the module documentation); the rest interpolate their data points.
 ///
 /// Errors ([`Error::InvalidArgument`]): caps with fewer than 2 rings, ends at one height, or
 /// a folding meridian cap.
@@ -680,7 +696,7 @@ pub fn wedge_parts(
     profile: &RevolvedProfile,
     grid: &SweepGrid,
     ring_s: &[f64],
-) -> Result<(MeshParts, Vec<DesignCoord>)> {
+) -> Result<(MeshParts, Vec<DesignCoord>, Vec<Role>)> {
     let capped = settings.caps == Caps::Flat;
     let rows = grid.rings.len();
     if capped && rows < 2 {
@@ -702,6 +718,7 @@ pub fn wedge_parts(
         |i: usize| -> Vec<u32> { (i * cols..(i + 1) * cols).map(|v| v as u32).collect() };
     let mut sectors = Vec::new();
     let mut tips = Vec::new();
+    let mut faired = Vec::new();
     for (end, kind) in grid.ends.iter().enumerate() {
         let i = if end == 0 { 0 } else { rows - 1 };
         let s = ring_s[i];
@@ -718,6 +735,7 @@ pub fn wedge_parts(
                     |rho: f64, theta: f64| cap_point(profile, s, pole, rho, theta / TAU);
                 let sector = w.sector(end, &ring_ids(i), angle, &on_surface, false);
                 tips.push(sector.apex);
+                faired.extend_from_slice(&sector.inner);
                 // A pole's creased radial line goes on along the side's meridian to the
                 // other end (a crease ending inside the surface would be a dart).
                 if let Some(c) = sector.creased_column {
@@ -738,7 +756,19 @@ pub fn wedge_parts(
             w.meridian_cap(theta, &column, bottom, top, &mut shared)?;
         }
     }
-    Ok(w.finish(&tips))
+    let on_crease: HashSet<u32> = w.creased.iter().flat_map(|&(a, b)| [a, b]).collect();
+    let (parts, coords) = w.finish(&tips);
+    let mut roles: Vec<Role> = coords
+        .iter()
+        .map(|c| match c {
+            DesignCoord::Planar => Role::Keep,
+            _ => Role::Interpolate,
+        })
+        .collect();
+    for v in faired.into_iter().filter(|v| !on_crease.contains(v)) {
+        roles[v as usize] = Role::Fair;
+    }
+    Ok((parts, coords, roles))
 }
 
 #[cfg(test)]

@@ -5,8 +5,10 @@
 // arguments (each refined once, then merged). Built by cmake, not run by ctest:
 // `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [mesh.obj...]`
 // (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
-// each side, untimed, for callgrind), or `bench_eval --scale [--scale-max 6]`: build and update
-// at 10^3..10^5 (10^6) faces.
+// each side, untimed, for callgrind), or `bench_eval --scale [--scale-min D] [--scale-max E]
+// [--scale-only FAMILY-PREFIX]`: build, position
+// update, evaluation and refinement at 10^D..10^E faces (3 and 6 by default) on random and
+// shape-derived meshes (scripts/plot_scale.py plots its rows).
 //
 // P1: 10^6 random (face, u, v) -> position + du + dv.
 //     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
@@ -16,6 +18,10 @@
 //     refinement + local-point stencils in one double-precision table
 //     (StencilTableReal<double>::UpdateValues, the loop Osd::CpuEvaluator::EvalStencils runs;
 //     Osd's evaluators take floats in 3.5), each ending with every patch point computed.
+// Threads: the evaluator build, 10^6 points, a position update and the limit stencils at 1, 2
+//     and all cores, beside Osd::OmpEvaluator (OpenMP) running EvalStencils (refinement +
+//     local points) and EvalPatches (the same 10^6 points) at the same thread counts. Osd's
+//     evaluators take float buffers and weights in 3.5: that side is single precision.
 // P2: uniform refinement to level 3, topology + positions: profsubd_refine_uniform vs
 //     Far::TopologyRefiner::RefineUniform + PrimvarRefinerReal<double>::Interpolate
 //     (TopologyRefiner construction included on both sides), time and peak memory (each run
@@ -36,6 +42,10 @@
 #include <opensubdiv/far/patchTableFactory.h>
 #include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/osd/bufferDescriptor.h>
+#include <opensubdiv/osd/cpuPatchTable.h>
+#include <opensubdiv/osd/ompEvaluator.h>
+#include <opensubdiv/osd/types.h>
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -46,7 +56,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <ctime>
 #include <functional>
+#include <random>
 #include <thread>
 
 using namespace OpenSubdiv;
@@ -56,10 +69,27 @@ namespace {
 
 double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
 
+// The calling thread's processor time, seconds.
+double thread_cpu() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+// --scale times single-threaded work in the thread's processor time, which a loaded shared
+// machine disturbs far less than wall-clock time (waiting for a core is not counted).
+bool use_thread_cpu = false;
+
 // Best of `reps` runs of f (seconds).
 double best(int reps, const std::function<void()> &f) {
     double b = 1e300;
     for (int r = 0; r < reps; ++r) {
+        if (use_thread_cpu) {
+            double t = thread_cpu();
+            f();
+            b = std::min(b, thread_cpu() - t);
+            continue;
+        }
         auto t = Clock::now();
         f();
         b = std::min(b, seconds(t));
@@ -100,8 +130,10 @@ double peak_mib(const std::function<void()> &f) {
     return (ru.ru_maxrss - start) / 1024.0;
 }
 
-// The shape refined once by Far, as a new OsdShape (creases and corners at level 1).
-profsubd_test::OsdShape refine_once(const profsubd_test::OsdShape &s) {
+// The shape refined once by Far, as a new OsdShape (creases and corners at level 1; with
+// `keep_sharpness`, a crease keeps its parent's sharpness instead of the decayed one, so that
+// the share of deeply refined faces does not fall with each refinement).
+profsubd_test::OsdShape refine_once(const profsubd_test::OsdShape &s, bool keep_sharpness = false) {
     auto refiner = profsubd_test::build_refiner(s);
     Far::TopologyRefiner::UniformOptions uo(1);
     uo.fullTopologyInLastLevel = true;
@@ -123,7 +155,7 @@ profsubd_test::OsdShape refine_once(const profsubd_test::OsdShape &s) {
             auto ev = l.GetEdgeVertices(e);
             out.crease_vertices.push_back(ev[0]);
             out.crease_vertices.push_back(ev[1]);
-            out.crease_sharpness.push_back(sh);
+            out.crease_sharpness.push_back(keep_sharpness ? sh + 1.0f : sh);
         }
     }
     for (int v = 0; v < l.GetNumVertices(); ++v) {
@@ -182,6 +214,120 @@ std::unique_ptr<Far::StencilTableReal<double> const> far_update_stencils(const p
                                                                           t->GetLocalPointStencilTable<double>()));
 }
 
+// Far's counterpart of the batch evaluation: PatchMap lookup, basis, patch points.
+void far_evaluate(const Far::PatchTable &table, const Far::PatchMap &pmap,
+                  const std::vector<profsubd_test::FarPoint> &pp, const profsubd_test::FacePoints &pts, double *P,
+                  double *DU, double *DV) {
+    double wp[20], wu[20], wv[20];
+    const size_t n = pts.faces.size();
+    for (size_t i = 0; i < n; ++i) {
+        const Far::PatchTable::PatchHandle *h = pmap.FindPatch(pts.faces[i], pts.us[i], pts.vs[i]);
+        if (!h) continue;  // a hole
+        table.EvaluateBasis(*h, pts.us[i], pts.vs[i], wp, wu, wv);
+        auto cvs = table.GetPatchVertices(*h);
+        double p[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
+        for (int k = 0; k < cvs.size(); ++k) {
+            const double *c = pp[cvs[k]].p;
+            for (int d = 0; d < 3; ++d) {
+                p[d] += wp[k] * c[d];
+                du[d] += wu[k] * c[d];
+                dv[d] += wv[k] * c[d];
+            }
+        }
+        for (int d = 0; d < 3; ++d) {
+            P[3 * i + d] = p[d];
+            DU[3 * i + d] = du[d];
+            DV[3 * i + d] = dv[d];
+        }
+    }
+}
+
+// Far's counterpart of profsubd_refine_uniform: TopologyRefiner + RefineUniform +
+// PrimvarRefiner; returns the last refined point's x (a checksum) and the level's counts.
+double far_refine(const profsubd_test::OsdShape &shape, int level, int counts[2]) {
+    auto r = profsubd_test::build_refiner(shape);
+    r->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
+    std::vector<profsubd_test::FarPoint> pts = profsubd_test::refine_points(*r, shape.positions);
+    counts[0] = r->GetLevel(level).GetNumVertices();
+    counts[1] = r->GetLevel(level).GetNumFaces();
+    return pts.back().p[0];
+}
+
+// OpenSubdiv's multi-core path: Osd::OmpEvaluator over float buffers (Osd 3.5 evaluates in
+// float only). One stencil table takes the control points to every refined and local point
+// (Far's factorized refinement stencils with the PatchTable's local points appended), and
+// EvalPatches evaluates patch coordinates found once through the PatchMap.
+struct OsdOmp {
+    std::unique_ptr<Far::TopologyRefiner> refiner;
+    std::unique_ptr<Far::PatchTable> table;
+    std::unique_ptr<Far::PatchMap> map;
+    std::unique_ptr<const Far::StencilTable> stencils;
+    std::unique_ptr<Osd::CpuPatchTable> cpu_table;
+    std::vector<float> points;  // control points, then the stencils' points, 3 floats each
+    std::vector<Osd::PatchCoord> coords;
+    std::vector<float> p, du, dv;
+    int ncoarse = 0;
+
+    OsdOmp(const profsubd_test::OsdShape &shape, const profsubd_test::FacePoints &pts) {
+        std::vector<profsubd_test::FarPoint> unused;  // Far's double points: Osd makes its own
+        far_build(shape, refiner, table, map, unused);
+        Far::StencilTableFactory::Options so;
+        so.generateIntermediateLevels = true;
+        std::unique_ptr<const Far::StencilTable> refined(Far::StencilTableFactory::Create(*refiner, so));
+        const Far::StencilTable *local = table->GetLocalPointStencilTable();
+        if (local && local->GetNumStencils() > 0)
+            stencils.reset(Far::StencilTableFactory::AppendLocalPointStencilTable(*refiner, refined.get(), local));
+        else
+            stencils = std::move(refined);
+        cpu_table.reset(Osd::CpuPatchTable::Create(table.get()));
+        ncoarse = refiner->GetLevel(0).GetNumVertices();
+        points.assign(3 * (ncoarse + stencils->GetNumStencils()), 0.0f);
+        for (size_t i = 0; i < pts.faces.size(); ++i) {
+            const Far::PatchTable::PatchHandle *h = map->FindPatch(pts.faces[i], pts.us[i], pts.vs[i]);
+            if (h) coords.emplace_back(*h, (float)pts.us[i], (float)pts.vs[i]);
+        }
+        p.resize(3 * coords.size());
+        du.resize(3 * coords.size());
+        dv.resize(3 * coords.size());
+    }
+
+    // New control points (doubles, converted as Osd's users do) through every stencil.
+    void update(const std::vector<double> &positions) {
+        for (int i = 0; i < 3 * ncoarse; ++i) points[i] = (float)positions[i];
+        Osd::BufferDescriptor src(0, 3, 3), dst(3 * ncoarse, 3, 3);
+        Osd::OmpEvaluator::EvalStencils(points.data(), src, points.data(), dst, &stencils->GetSizes()[0],
+                                        &stencils->GetOffsets()[0], &stencils->GetControlIndices()[0],
+                                        &stencils->GetWeights()[0], 0, stencils->GetNumStencils());
+    }
+
+    void evaluate() {
+        Osd::BufferDescriptor src(0, 3, 3), d(0, 3, 3);
+        Osd::OmpEvaluator::EvalPatches(points.data(), src, p.data(), d, du.data(), d, dv.data(), d, (int)coords.size(),
+                                       coords.data(), cpu_table->GetPatchArrayBuffer(),
+                                       cpu_table->GetPatchIndexBuffer(), cpu_table->GetPatchParamBuffer());
+    }
+};
+
+// A profsubd stencil table's rows as flat arrays (offsets, indices, weights' bits).
+std::vector<uint64_t> table_words(const profsubd_stencil_table *t) {
+    size_t rows = 0, nnz = 0, needed = 0;
+    profsubd_stencil_table_num_rows(t, &rows);
+    profsubd_stencil_table_num_entries(t, &nnz);
+    std::vector<uint32_t> offsets(rows + 1), indices(nnz);
+    std::vector<double> weights(nnz);
+    profsubd_stencil_table_get_offsets(t, offsets.data(), offsets.size(), &needed);
+    profsubd_stencil_table_get_indices(t, indices.data(), indices.size(), &needed);
+    profsubd_stencil_table_get_weights(t, weights.data(), weights.size(), &needed);
+    std::vector<uint64_t> out(offsets.begin(), offsets.end());
+    out.insert(out.end(), indices.begin(), indices.end());
+    for (double w : weights) {
+        uint64_t b;
+        std::memcpy(&b, &w, sizeof b);
+        out.push_back(b);
+    }
+    return out;
+}
+
 // --build-only: each side's build and one position update, once, untimed: the run to profile
 // with `valgrind --tool=callgrind` (instruction counts, repeatable on a loaded machine).
 void build_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh, const profsubd_options *opts) {
@@ -204,59 +350,215 @@ void build_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh,
     profsubd_evaluator_free(ev);
 }
 
-// --scale: build and position update on both sides for meshes of 10^3 to 10^5 faces (10^6
-// with --scale-max 6): catmark_car refined 0..k times by Far, creases and all.
-void scale(int max_exp) {
-    profsubd_test::OsdShape shape;
+// Uniform in [0, 1) from the top 53 bits of a 64-bit Mersenne twister (the engine's output is
+// fixed by the standard; std::uniform_real_distribution's is not).
+double uniform(std::mt19937_64 &rng) { return (rng() >> 11) * 0x1.0p-53; }
+
+// A random quad-dominant closed manifold of about `target` faces: a torus of a x b quads
+// (R = 3, r = 1) with every vertex moved by up to 0.3 of a cell in each direction, 2 % of the
+// quads split into two triangles along a random diagonal (valence 5-6 extraordinary vertices
+// at the diagonals' ends, and non-quads); with `creases`, 5 % of the rings around the tube
+// and 3 % of the rings along it made semi-sharp creases of random sharpness in [0.5, 4) and
+// 0.2 % of the other edges semi-sharp (sharpness 2: darts at their ends). Deterministic
+// (std::mt19937_64 seeded with `seed`).
+profsubd_test::OsdShape random_torus(int target, bool creases, uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    const int a = std::max(8, (int)std::lround(std::sqrt(2.0 * target))), b = std::max(4, target / a);
+    const double R = 3, r = 1, cell = 2 * M_PI / std::max(a, b);
+    profsubd_test::OsdShape out;
+    out.options = profsubd_test::profsubd_default_options();
+    auto id = [&](int i, int j) { return ((i + a) % a) * b + (j + b) % b; };
+    for (int i = 0; i < a; ++i)
+        for (int j = 0; j < b; ++j) {
+            double u = 2 * M_PI * i / a + 0.3 * cell * (2 * uniform(rng) - 1);
+            double v = 2 * M_PI * j / b + 0.3 * cell * (2 * uniform(rng) - 1);
+            double rr = r * (1 + 0.3 * cell * (2 * uniform(rng) - 1));
+            out.positions.push_back((R + rr * std::cos(v)) * std::cos(u));
+            out.positions.push_back((R + rr * std::cos(v)) * std::sin(u));
+            out.positions.push_back(rr * std::sin(v));
+        }
+    for (int i = 0; i < a; ++i)
+        for (int j = 0; j < b; ++j) {
+            int q[4] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
+            if (uniform(rng) < 0.02) {
+                int k = uniform(rng) < 0.5 ? 0 : 1;  // diagonal q[k]-q[k+2]
+                int t1[3] = {q[k], q[k + 1], q[k + 2]}, t2[3] = {q[k], q[k + 2], q[(k + 3) % 4]};
+                for (int *t : {t1, t2}) {
+                    out.face_sizes.push_back(3);
+                    out.face_indices.insert(out.face_indices.end(), t, t + 3);
+                }
+            } else {
+                out.face_sizes.push_back(4);
+                out.face_indices.insert(out.face_indices.end(), q, q + 4);
+            }
+        }
+    if (creases) {
+        auto crease = [&](int v0, int v1, float sh) {
+            out.crease_vertices.push_back(v0);
+            out.crease_vertices.push_back(v1);
+            out.crease_sharpness.push_back(sh);
+        };
+        std::vector<bool> ring_i(a), ring_j(b);
+        for (int i = 0; i < a; ++i) ring_i[i] = uniform(rng) < 0.05;
+        for (int j = 0; j < b; ++j) ring_j[j] = uniform(rng) < 0.03;
+        for (int i = 0; i < a; ++i)
+            if (ring_i[i]) {
+                float sh = (float)(0.5 + 3.5 * uniform(rng));
+                for (int j = 0; j < b; ++j) crease(id(i, j), id(i, j + 1), sh);
+            }
+        for (int j = 0; j < b; ++j)
+            if (ring_j[j]) {
+                float sh = (float)(0.5 + 3.5 * uniform(rng));
+                for (int i = 0; i < a; ++i) crease(id(i, j), id(i + 1, j), sh);
+            }
+        for (int i = 0; i < a; ++i)
+            for (int j = 0; j < b; ++j) {
+                if (!ring_i[i] && uniform(rng) < 0.002) crease(id(i, j), id(i, j + 1), 2.0f);
+                if (!ring_j[j] && uniform(rng) < 0.002) crease(id(i, j), id(i + 1, j), 2.0f);
+            }
+    }
+    return out;
+}
+
+// --scale: build, position update, evaluation of 2 x 10^5 random points and uniform refinement
+// to level 1 on both sides, one thread each, at about 10^3 .. 10^max_exp faces, for four
+// families: random tori with and without semi-sharp creases, and catmark_car refined by Far
+// with its semi-sharp creases (kept at sharpness 5 at every level) and without them. One
+// `row` line per mesh (scripts/plot_scale.py reads them).
+void scale(int min_exp, int max_exp, const std::string &only) {
+    use_thread_cpu = true;
+    profsubd_test::OsdShape car;
     std::string err;
-    if (!profsubd_test::read_osd_shape(profsubd_test::osd_shapes_dir() + "/catmark_car.obj", &shape, &err)) {
+    if (!profsubd_test::read_osd_shape(profsubd_test::osd_shapes_dir() + "/catmark_car.obj", &car, &err)) {
         std::fprintf(stderr, "bench_eval: %s\n", err.c_str());
         return;
     }
-    std::printf("scale: catmark_car refined k times by Far (semi-sharp creases), one thread; best of 3 (1 above 10^5 faces)\n");
-    std::printf("%9s %11s %11s %7s %11s %11s %7s %9s\n", "faces", "build ms", "Far ms", "ratio", "update ms",
-                "Far ms", "ratio", "ns/face");
-    while (true) {
-        const int nf = shape.num_faces();
-        if (nf > std::pow(10.0, max_exp) * 1.1) break;
-        profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
-        profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
-        profsubd_options_set_threads(opts, 1);
-        const int reps = nf > 200000 ? 1 : 3;
-        profsubd_evaluator *ev = nullptr;
-        double t_ps = best(reps, [&] {
-            if (ev) profsubd_evaluator_free(ev);
-            profsubd_evaluator_new(mesh.get(), opts, &ev);
-        });
-        std::unique_ptr<Far::TopologyRefiner> adaptive;
-        std::unique_ptr<Far::PatchTable> table;
-        std::unique_ptr<Far::PatchMap> pmap;
-        std::vector<profsubd_test::FarPoint> pp;
-        double t_far = best(reps, [&] { far_build(shape, adaptive, table, pmap, pp); });
-        double t_up = best(reps, [&] {
-            profsubd_evaluator_update_positions(ev, shape.positions.data(), shape.num_vertices());
-        });
-        auto stencils = far_update_stencils(shape);
-        std::vector<profsubd_test::FarPoint> src(shape.num_vertices()), dst(stencils->GetNumStencils());
-        double t_up_far = best(reps, [&] {
-            for (int v = 0; v < shape.num_vertices(); ++v)
-                for (int d = 0; d < 3; ++d) src[v].p[d] = shape.positions[3 * v + d];
-            stencils->UpdateValues(src.data(), dst.data());
-        });
-        std::printf("%9d %11.1f %11.1f %7.2f %11.2f %11.2f %7.2f %9.0f\n", nf, 1e3 * t_ps, 1e3 * t_far, t_ps / t_far,
-                    1e3 * t_up, 1e3 * t_up_far, t_up / t_up_far, 1e9 * t_ps / nf);
-        std::fflush(stdout);
-        profsubd_evaluator_free(ev);
-        profsubd_options_free(opts);
-        shape = refine_once(shape);
+    // The car refined k times with its creases kept, for k = 0, 1, 3, 5 (1,575, 6,300,
+    // 100,800, 1,612,800 quads): the sizes nearest the powers of ten.
+    std::vector<profsubd_test::OsdShape> cars;
+    for (int k = 0; (int)cars.size() + 3 <= max_exp; ++k) {
+        if (k == 0 || k == 1 || k == 3 || k == 5) cars.push_back(car);
+        if (k == 5) break;
+        car = refine_once(car, true);
     }
+    const int N = 200000, level = 1;
+    std::printf("scale: one thread each side, thread processor time; best of 3 below 10^4 faces, else one run; %d random points; "
+                "refinement to level %d\n",
+                N, level);
+    std::printf("%-16s %9s | %9s %9s %6s | %8s %8s %6s | %8s %8s %6s | %8s %8s %6s | %7s %7s\n", "row family", "faces",
+                "build ms", "Far ms", "ratio", "upd ms", "Far ms", "ratio", "eval ms", "Far ms", "ratio", "ref ms",
+                "Far ms", "ratio", "us/f ps", "us/f Far");
+    struct Case {
+        std::string family;
+        profsubd_test::OsdShape shape;
+    };
+    for (int e = std::max(3, min_exp); e <= max_exp; ++e) {
+        std::vector<Case> cases;
+        const int target = (int)std::lround(std::pow(10.0, e));
+        cases.push_back({"random_creased", random_torus(target, true, 1000 + e)});
+        cases.push_back({"random_smooth", random_torus(target, false, 1000 + e)});
+        if (e - 3 < (int)cars.size()) {
+            cases.push_back({"car_creased", cars[e - 3]});
+            profsubd_test::OsdShape smooth = cars[e - 3];
+            smooth.crease_vertices.clear();
+            smooth.crease_sharpness.clear();
+            cases.push_back({"car_smooth", smooth});
+        }
+        for (Case &c : cases) {
+            if (c.family.compare(0, only.size(), only) != 0) continue;
+            const profsubd_test::OsdShape &shape = c.shape;
+            const int nf = shape.num_faces();
+            const int reps = nf >= 10000 ? 1 : 3;
+            profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
+            if (!mesh) {
+                std::fprintf(stderr, "bench_eval: %s: %s\n", c.family.c_str(), err.c_str());
+                continue;
+            }
+            profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
+            profsubd_options_set_threads(opts, 1);
+            profsubd_test::FacePoints pts = profsubd_test::random_face_points(N, nf, 7);
+            std::vector<double> P(3 * N), DU(3 * N), DV(3 * N);
+            std::vector<double> moved(shape.positions.size());
+            for (size_t i = 0; i < moved.size(); ++i) moved[i] = 1.01 * shape.positions[i] + 0.001 * (i % 7);
+            double checksum = 0;
+
+            // profsubd: build, update, evaluate, then free before Far's side.
+            profsubd_evaluator *ev = nullptr;
+            double t_build = best(reps, [&] {
+                if (ev) profsubd_evaluator_free(ev);
+                ev = nullptr;
+                if (profsubd_evaluator_new(mesh.get(), opts, &ev) != PROFSUBD_OK)
+                    std::fprintf(stderr, "build: %s\n", profsubd_last_error_message());
+            });
+            if (!ev) {
+                profsubd_options_free(opts);
+                continue;
+            }
+            profsubd_evaluator_set_threads(ev, 1);
+            double t_update = best(reps, [&] {
+                profsubd_evaluator_update_positions(ev, moved.data(), shape.num_vertices());
+            });
+            double t_eval = best(reps, [&] {
+                if (profsubd_evaluator_evaluate(ev, pts.faces.data(), pts.us.data(), pts.vs.data(), N, P.data(),
+                                                DU.data(), DV.data()) != PROFSUBD_OK)
+                    std::fprintf(stderr, "evaluate: %s\n", profsubd_last_error_message());
+            });
+            checksum += P[0];
+            profsubd_evaluator_free(ev);
+            double t_refine = best(reps, [&] {
+                profsubd_mesh *out = nullptr;
+                if (profsubd_refine_uniform(mesh.get(), opts, level, &out) != PROFSUBD_OK)
+                    std::fprintf(stderr, "refine: %s\n", profsubd_last_error_message());
+                profsubd_mesh_free(out);
+            });
+
+            // Far: adaptive refinement + PatchTable + PatchMap, stencils, evaluation, refinement.
+            double t_far_build, t_far_eval, t_far_update;
+            {
+                std::unique_ptr<Far::TopologyRefiner> adaptive;
+                std::unique_ptr<Far::PatchTable> table;
+                std::unique_ptr<Far::PatchMap> pmap;
+                std::vector<profsubd_test::FarPoint> pp;
+                t_far_build = best(reps, [&] { far_build(shape, adaptive, table, pmap, pp); });
+                t_far_eval = best(reps, [&] { far_evaluate(*table, *pmap, pp, pts, P.data(), DU.data(), DV.data()); });
+                checksum += P[0];
+            }
+            {
+                auto stencils = far_update_stencils(shape);
+                std::vector<profsubd_test::FarPoint> src(shape.num_vertices()), dst(stencils->GetNumStencils());
+                t_far_update = best(reps, [&] {
+                    for (int v = 0; v < shape.num_vertices(); ++v)
+                        for (int d = 0; d < 3; ++d) src[v].p[d] = moved[3 * v + d];
+                    stencils->UpdateValues(src.data(), dst.data());
+                });
+                checksum += dst.empty() ? 0 : dst.back().p[0];
+            }
+            int counts[2];
+            double t_far_refine = best(reps, [&] { checksum += far_refine(shape, level, counts); });
+            std::printf("row %-12s %9d | %9.1f %9.1f %6.2f | %8.2f %8.2f %6.2f | %8.1f %8.1f %6.2f | %8.1f %8.1f %6.2f | "
+                        "%7.2f %7.2f\n",
+                        c.family.c_str(), nf, 1e3 * t_build, 1e3 * t_far_build, t_build / t_far_build, 1e3 * t_update,
+                        1e3 * t_far_update, t_update / t_far_update, 1e3 * t_eval, 1e3 * t_far_eval, t_eval / t_far_eval,
+                        1e3 * t_refine, 1e3 * t_far_refine, t_refine / t_far_refine, 1e6 * t_build / nf,
+                        1e6 * t_far_build / nf);
+            std::fflush(stdout);
+            if (checksum == 12345.678) std::printf("(checksum)\n");
+            profsubd_options_free(opts);
+        }
+    }
+    std::printf("columns: build = evaluator build vs Far adaptive refinement + PatchTable + PatchMap (with points);\n"
+                "upd = position update vs Far refinement + local-point stencils (double, UpdateValues); eval = %d\n"
+                "random points vs PatchTable + PatchMap; ref = uniform refinement to level %d vs TopologyRefiner +\n"
+                "PrimvarRefiner; us/f = build microseconds per face\n",
+                N, level);
 }
 
 }  // namespace
 
 int main(int argc, char **argv) {
     bool p2_only = false, build_only_mode = false;
-    int scale_max = 0;
+    int scale_max = 0, scale_min = 3;
+    std::string scale_only;
     std::vector<std::string> paths;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--p2")
@@ -264,14 +566,18 @@ int main(int argc, char **argv) {
         else if (std::string(argv[i]) == "--build-only")
             build_only_mode = true;
         else if (std::string(argv[i]) == "--scale")
-            scale_max = std::max(scale_max, 5);
+            scale_max = std::max(scale_max, 6);
         else if (std::string(argv[i]) == "--scale-max" && i + 1 < argc)
             scale_max = std::atoi(argv[++i]);
+        else if (std::string(argv[i]) == "--scale-min" && i + 1 < argc)
+            scale_min = std::atoi(argv[++i]);
+        else if (std::string(argv[i]) == "--scale-only" && i + 1 < argc)
+            scale_only = argv[++i];
         else
             paths.push_back(argv[i]);
     }
     if (scale_max > 0) {
-        scale(scale_max);
+        scale(scale_min, scale_max, scale_only);
         return 0;
     }
     if (paths.empty())
@@ -422,28 +728,7 @@ int main(int argc, char **argv) {
     std::unique_ptr<Far::PatchMap> pmap;
     std::vector<profsubd_test::FarPoint> pp;
     double t_build_far = best(3, [&] { far_build(shape, adaptive, table, pmap, pp); });
-    double t_eval_far = best(3, [&] {
-        double wp[20], wu[20], wv[20];
-        for (int i = 0; i < N; ++i) {
-            const Far::PatchTable::PatchHandle *h = pmap->FindPatch(faces[i], us[i], vs[i]);
-            table->EvaluateBasis(*h, us[i], vs[i], wp, wu, wv);
-            auto cvs = table->GetPatchVertices(*h);
-            double p[3] = {0, 0, 0}, du[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
-            for (int k = 0; k < cvs.size(); ++k) {
-                const double *c = pp[cvs[k]].p;
-                for (int d = 0; d < 3; ++d) {
-                    p[d] += wp[k] * c[d];
-                    du[d] += wu[k] * c[d];
-                    dv[d] += wv[k] * c[d];
-                }
-            }
-            for (int d = 0; d < 3; ++d) {
-                P[3 * i + d] = p[d];
-                DU[3 * i + d] = du[d];
-                DV[3 * i + d] = dv[d];
-            }
-        }
-    });
+    double t_eval_far = best(3, [&] { far_evaluate(*table, *pmap, pp, points, P.data(), DU.data(), DV.data()); });
     checksum += P[6];
 
     // --- Position update: new control points through the same topology.
@@ -498,6 +783,63 @@ int main(int argc, char **argv) {
                 stencils->GetNumStencils());
     std::printf("  ratio profsubd/OpenSubdiv position update: %.3f\n", t_update_ps / t_update_far);
 
+
+    // --- Threads: profsubd at 1, 2 and all cores beside Osd::OmpEvaluator (float).
+    std::vector<int> counts = {1, 2};
+    const int hw = (int)std::thread::hardware_concurrency();
+    if (hw > 2) counts.push_back(hw);
+    OsdOmp omp(shape, points);
+    std::printf("\nThreads (%d cores): profsubd (double) beside Osd::OmpEvaluator (OpenMP; Osd 3.5 evaluates in float "
+                "only);\nbest of 3, speed-up over one thread in brackets, profsubd's results compared with one thread's\n",
+                hw);
+    std::printf("  %7s | %17s %17s %17s %17s | %17s %17s | %s\n", "threads", "build ms", "evaluate ms", "update ms",
+                "limit stencils ms", "Osd EvalStencils", "Osd EvalPatches", "profsubd results");
+    double base[6] = {0, 0, 0, 0, 0, 0};
+    std::vector<double> P1, U1;
+    std::vector<uint64_t> L1;
+    const size_t probe = std::min<size_t>(N, 100000);  // points compared after an update
+    for (int t : counts) {
+        profsubd_options_set_threads(opts, t);
+        double tb = best(3, build_ps);
+        profsubd_evaluator_set_threads(ev, t);
+        double te = best(3, eval_ps);
+        std::vector<double> Pt(P.begin(), P.end());
+        double tu = best(3, [&] { profsubd_evaluator_update_positions(ev, moved.data(), nv); });
+        profsubd_evaluator_evaluate(ev, faces.data(), us.data(), vs.data(), probe, P.data(), DU.data(), DV.data());
+        std::vector<double> Ut(P.begin(), P.begin() + 3 * probe);
+        profsubd_stencil_table *lt = nullptr;
+        double tl = best(3, [&] {
+            profsubd_stencil_table_free(lt);
+            lt = nullptr;
+            if (profsubd_limit_stencils_new(mesh.get(), opts, PROFSUBD_LIMIT_POSITION, &lt) != PROFSUBD_OK)
+                std::fprintf(stderr, "limit stencils: %s\n", profsubd_last_error_message());
+        });
+        std::vector<uint64_t> Lt = table_words(lt);
+        profsubd_stencil_table_free(lt);
+        Osd::OmpEvaluator::SetNumThreads(t);
+        double to_s = best(3, [&] { omp.update(moved); });
+        double to_p = best(3, [&] { omp.evaluate(); });
+        bool same = true;
+        if (t == 1) {
+            P1 = Pt;
+            U1 = Ut;
+            L1 = Lt;
+            double v[6] = {tb, te, tu, tl, to_s, to_p};
+            std::copy(v, v + 6, base);
+        } else {
+            same = std::memcmp(P1.data(), Pt.data(), P1.size() * sizeof(double)) == 0 &&
+                   std::memcmp(U1.data(), Ut.data(), U1.size() * sizeof(double)) == 0 && L1 == Lt;
+        }
+        std::printf("  %7d | %8.1f (%5.2fx) %8.1f (%5.2fx) %8.2f (%5.2fx) %8.2f (%5.2fx) | %8.2f (%5.2fx) %8.1f (%5.2fx) | "
+                    "%s\n",
+                    t, 1e3 * tb, base[0] / tb, 1e3 * te, base[1] / te, 1e3 * tu, base[2] / tu, 1e3 * tl, base[3] / tl,
+                    1e3 * to_s, base[4] / to_s, 1e3 * to_p, base[5] / to_p,
+                    t == 1 ? "(reference)" : same ? "bit-identical" : "DIFFERENT");
+        std::fflush(stdout);
+    }
+    std::printf("  (%zu Osd patch coordinates; %d Osd stencils; profsubd update checked on %zu points)\n",
+                omp.coords.size(), omp.stencils->GetNumStencils(), probe);
+    checksum += omp.p[0];
     std::printf("(checksum %g)\n", checksum);
 
     profsubd_evaluator_free(ev);

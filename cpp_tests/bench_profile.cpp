@@ -2,8 +2,9 @@
 // stencils -> sparse LU fit) at 128 x 64 samples through the C API, against OpenSubdiv
 // building the limit stencil table of the same mesh (Far::TopologyRefiner from the mesh,
 // RefineAdaptive, LimitStencilTableFactoryReal<double> at every control vertex), in the same
-// run. Prints both times (best of 3) and their ratio, and checks that OpenSubdiv's stencils
-// applied to the fitted control points reproduce the targets.
+// run. Prints both times (best of 3) and their ratio, the pipeline on one thread and on all
+// cores (and checks that both fit the same control points, bit for bit), and checks that
+// OpenSubdiv's stencils applied to the fitted control points reproduce the targets.
 //
 //   ctest -R bench_profile -V        (or run the bench_profile executable)
 #include "capi_mesh.h"
@@ -16,7 +17,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
+#include <ctime>
 #include <sstream>
+#include <thread>
 
 using namespace profsubd_test;
 using namespace OpenSubdiv;
@@ -28,6 +32,14 @@ namespace {
 
 double seconds_since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// The calling thread's processor time, seconds: on a loaded shared machine it leaves out the
+// time spent waiting for a core, so single-threaded work compares far more repeatably.
+double thread_cpu() {
+    timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
 // OpenSubdiv's limit stencil table at every control vertex (corner of its first face),
@@ -72,17 +84,41 @@ int main() {
     OptionsPtr options(raw);
     profsubd_options_set_samples(raw, 64, 128);
 
-    double t_profsubd = 1e300;
+    // Best of 3 on `threads` threads (0: all cores); the last model is kept in `model`.
     profsubd_fitted *model = nullptr;
-    for (int rep = 0; rep < 3; ++rep) {
-        profsubd_fitted_free(model);
-        model = nullptr;
-        Clock::time_point t0 = Clock::now();
-        profsubd_status st = profsubd_profile_build(&curves, raw, &model);
-        t_profsubd = std::min(t_profsubd, seconds_since(t0));
-        if (!ck.check(st == PROFSUBD_OK, "profsubd_profile_build: " + describe_status(st))) {
-            return ck.finish();
+    double cpu_one = 1e300;  // processor time of the one-thread pipeline
+    auto pipeline = [&](size_t threads) {
+        profsubd_options_set_threads(raw, threads);
+        double t = 1e300;
+        for (int rep = 0; rep < 3; ++rep) {
+            profsubd_fitted_free(model);
+            model = nullptr;
+            Clock::time_point t0 = Clock::now();
+            const double c0 = thread_cpu();
+            profsubd_status st = profsubd_profile_build(&curves, raw, &model);
+            t = std::min(t, seconds_since(t0));
+            if (threads == 1) cpu_one = std::min(cpu_one, thread_cpu() - c0);
+            if (!ck.check(st == PROFSUBD_OK, "profsubd_profile_build: " + describe_status(st))) {
+                return -1.0;
+            }
         }
+        return t;
+    };
+    const double t_one = pipeline(1);
+    std::vector<double> one_thread;
+    if (model) {
+        profsubd_mesh *m1 = nullptr;
+        profsubd_fitted_get_mesh(model, &m1);
+        MeshPtr owned1(m1);
+        size_t nv = 0;
+        profsubd_mesh_num_vertices(m1, &nv);
+        one_thread.resize(3 * nv);
+        size_t needed = 0;
+        profsubd_mesh_get_positions(m1, one_thread.data(), one_thread.size(), &needed);
+    }
+    const double t_profsubd = pipeline(0);
+    if (!model) {
+        return ck.finish();
     }
     profsubd_mesh *mesh = nullptr;
     profsubd_fitted_get_mesh(model, &mesh);
@@ -98,14 +134,26 @@ int main() {
         return ck.finish();
     }
     OsdShape shape = to_osd_shape(capi, profsubd_default_options());
+    ck.check(one_thread.size() == capi.positions.size() &&
+                 std::memcmp(one_thread.data(), capi.positions.data(), one_thread.size() * sizeof(double)) == 0,
+             "the fit on all cores is the fit on one thread, bit for bit");
+    {
+        std::ostringstream s;
+        s << "profsubd whole pipeline on one thread " << t_one * 1e3 << " ms, on all cores (" 
+          << std::thread::hardware_concurrency() << ") " << t_profsubd * 1e3 << " ms: speed-up "
+          << t_one / t_profsubd;
+        ck.note(s.str());
+    }
 
     for (int isolation : {4, 10}) {
-        double t_osd = 1e300;
+        double t_osd = 1e300, cpu_osd = 1e300;
         std::unique_ptr<const LimitTable> table;
         for (int rep = 0; rep < 3; ++rep) {
             Clock::time_point t0 = Clock::now();
+            const double c0 = thread_cpu();
             table = osd_limit_table(shape, isolation);
             t_osd = std::min(t_osd, seconds_since(t0));
+            cpu_osd = std::min(cpu_osd, thread_cpu() - c0);
         }
         // OpenSubdiv's stencils on the fitted points reproduce the targets (darts aside,
         // where its limit mask is approximate: allow 1e-6 there, report the worst).
@@ -126,8 +174,11 @@ int main() {
         }
         std::ostringstream s;
         s << "128x64 bottle (" << capi.num_vertices << " vertices): profsubd whole pipeline "
-          << t_profsubd * 1e3 << " ms; OpenSubdiv limit stencil table (isolation " << isolation
-          << ") " << t_osd * 1e3 << " ms; ratio profsubd/OpenSubdiv " << t_profsubd / t_osd
+          << t_profsubd * 1e3 << " ms (one thread " << t_one * 1e3
+          << " ms); OpenSubdiv limit stencil table (isolation " << isolation << ") " << t_osd * 1e3
+          << " ms; ratio profsubd/OpenSubdiv " << t_profsubd / t_osd << " (one thread "
+          << t_one / t_osd << "); processor time, one thread: " << cpu_one * 1e3 << " vs "
+          << cpu_osd * 1e3 << " ms, ratio " << cpu_one / cpu_osd
           << "; OpenSubdiv stencils vs targets max " << worst;
         ck.note(s.str());
         ck.check(worst < 1e-6, "OpenSubdiv's limit stencils reproduce the targets");

@@ -1118,7 +1118,9 @@ enum profsubd_status profsubd_fold_report_get_folded_faces(const struct profsubd
  * `PROFSUBD_LIMIT_POSITION` (the exact limit position, also at darts and semi-sharp
  * features), `PROFSUBD_LIMIT_DU` or `PROFSUBD_LIMIT_DV`. A vertex without limit surface
  * (isolated, or all its faces holes) has an empty row (`offsets[i] == offsets[i + 1]`),
- * which `profsubd_stencil_table_apply` turns into NaN; every other row has entries.
+ * which `profsubd_stencil_table_apply` turns into NaN; every other row has entries. Position
+ * stencils are built on the threads `profsubd_options_set_threads` sets (default all cores),
+ * the table the same for any.
  */
 enum profsubd_status profsubd_limit_stencils_new(const struct profsubd_mesh *mesh,
                                                  const struct profsubd_options *options,
@@ -1415,9 +1417,10 @@ enum profsubd_status profsubd_options_set_crease_method(struct profsubd_options 
 
 /**
  * Set how many threads an evaluator built with these options (`profsubd_evaluator_new`)
- * uses for its build and its batches of points: 0 (the default) for all cores, 1 for the
- * calling thread only (`profsubd_evaluator_set_threads` changes it afterwards). Results are
- * bit for bit the same for every setting.
+ * uses for its build and its batches of points, and the constructions' fits (limit
+ * stencils and solve) use: 0 (the default) for all cores, 1 for the calling thread only
+ * (`profsubd_evaluator_set_threads` changes an evaluator's afterwards). Results are bit for
+ * bit the same for every setting.
  *
  * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `options`.
  */

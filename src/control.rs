@@ -42,6 +42,8 @@ pub struct Control {
     /// The part `[start, end]` of the caller's fraction this piece of work fills.
     start: f64,
     end: f64,
+    /// Threads the work may use (0: all cores); results do not depend on it.
+    threads: usize,
 }
 
 /// Most progress reports a loop of `n` steps makes through [`Control::step`].
@@ -54,6 +56,7 @@ impl Control {
         memory_budget: None,
         start: 0.0,
         end: 1.0,
+        threads: 0,
     };
 
     /// This control with `progress` as its hook.
@@ -70,6 +73,17 @@ impl Control {
             memory_budget: bytes,
             ..self
         }
+    }
+
+    /// This control with `threads` threads for the work that splits (0: all cores, the
+    /// default): the fit's limit stencils and solve. Results are the same for every count.
+    pub fn with_threads(self, threads: usize) -> Control {
+        Control { threads, ..self }
+    }
+
+    /// The thread count (0: all cores).
+    pub fn threads(&self) -> usize {
+        self.threads
     }
 
     /// The memory budget, bytes.
@@ -90,6 +104,7 @@ impl Control {
             memory_budget: self.memory_budget,
             start: self.start + span * from,
             end: self.start + span * to,
+            threads: self.threads,
         }
     }
 
@@ -141,6 +156,7 @@ impl fmt::Debug for Control {
         f.debug_struct("Control")
             .field("progress", &self.progress.is_some())
             .field("memory_budget", &self.memory_budget)
+            .field("threads", &self.threads)
             .finish()
     }
 }

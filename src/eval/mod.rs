@@ -18,7 +18,7 @@ mod dense;
 pub mod domain;
 pub mod evaluator;
 pub mod folds;
-mod parallel;
+pub(crate) mod parallel;
 pub(crate) mod patch_corner;
 pub(crate) mod patch_regular;
 pub(crate) mod patch_topology;

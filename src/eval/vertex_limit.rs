@@ -36,6 +36,8 @@
 //! first face has a smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are
 //! approximate there.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use crate::control::Control;
 use crate::error::Result;
 use crate::mesh::Mesh;
@@ -68,7 +70,11 @@ pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTab
     limit_stencils_with(mesh, options, &Control::NONE)
 }
 
-/// [`limit_stencils`], reporting to `control` each vertex (the fit's first stage).
+/// [`limit_stencils`] on `control`'s threads ([`Control::threads`], 0: all cores), reporting
+/// to `control` each vertex (the fit's first stage). Contiguous ranges of vertices, one per thread, are joined
+/// in vertex order: the table is the one-thread table bit for bit. The first range reports
+/// (its fraction stands for the whole: the ranges are equal); a cancel there stops the
+/// others at their next vertex.
 pub(crate) fn limit_stencils_with(
     mesh: &Mesh,
     options: &SubdivOptions,
@@ -76,17 +82,40 @@ pub(crate) fn limit_stencils_with(
 ) -> Result<StencilTable> {
     let level = Level::from_mesh_with_options(mesh, options);
     let surface = vertices_with_surface_in(&level);
-    let mut table = StencilTable::new();
-    let n = mesh.num_vertices();
-    for v in 0..n as u32 {
-        control.step(v as usize, n)?;
-        if !surface[v as usize] {
-            table.push_row([]);
-            continue;
+    let cancelled = AtomicBool::new(false);
+    let parts = super::parallel::map_ranges(mesh.num_vertices(), control.threads(), |range| {
+        let mut table = StencilTable::new();
+        let (first, len) = (range.start == 0, range.len());
+        for v in range {
+            if first {
+                control
+                    .step(v, len)
+                    .inspect_err(|_| cancelled.store(true, Ordering::Relaxed))?;
+            } else if cancelled.load(Ordering::Relaxed) {
+                break; // the first range's error is the one returned
+            }
+            if !surface[v] {
+                table.push_row([]);
+                continue;
+            }
+            let local = Local::new(&level, v as u32);
+            let (p, _) = vertex_limit(options, &level, &local, v as u32, false)?;
+            table.push_row(local.sparse(&p));
         }
-        let local = Local::new(&level, v);
-        let (p, _) = vertex_limit(options, &level, &local, v, false)?;
-        table.push_row(local.sparse(&p));
+        Ok(table)
+    });
+    let mut table = StencilTable::new();
+    for part in parts {
+        let part = part?;
+        for r in 0..part.num_rows() {
+            let (a, b) = (part.offsets[r] as usize, part.offsets[r + 1] as usize);
+            table.push_row(
+                part.indices[a..b]
+                    .iter()
+                    .copied()
+                    .zip(part.weights[a..b].iter().copied()),
+            );
+        }
     }
     Ok(table)
 }

@@ -54,7 +54,9 @@ pub unsafe extern "C" fn profsubd_options_set_progress(
     status_call(|| {
         let o = handle::borrow_mut(options, "options")?;
         let budget = o.settings.control.memory_budget();
-        let control = Control::NONE.with_memory_budget(budget);
+        let control = Control::NONE
+            .with_memory_budget(budget)
+            .with_threads(o.threads);
         o.settings.control = match callback {
             Some(callback) => control.with_progress(CProgress { callback, user }),
             None => control,

@@ -2,11 +2,13 @@
 //! control vertex as weights on the control vertices, in a stencil-table handle with count
 //! getters, copy-outs (CSR arrays) and an apply function.
 
-use crate::eval::{limit_stencils, vertex_limit_stencils, StencilTable};
+use crate::control::Control;
+use crate::eval::vertex_limit::limit_stencils_with;
+use crate::eval::{vertex_limit_stencils, StencilTable};
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle::{self, Handle};
 use crate::ffi::mesh::{mesh_arg, profsubd_mesh};
-use crate::ffi::options::{profsubd_options, resolve};
+use crate::ffi::options::{options_or_default, profsubd_options, resolve};
 use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::{all_of, arg_out, arg_slice, copy_slice, fill, CopyOut};
 use crate::ffi::status::profsubd_status;
@@ -47,7 +49,9 @@ unsafe fn table_arg<'a>(p: *const profsubd_stencil_table) -> FfiResult<&'a Stenc
 /// `PROFSUBD_LIMIT_POSITION` (the exact limit position, also at darts and semi-sharp
 /// features), `PROFSUBD_LIMIT_DU` or `PROFSUBD_LIMIT_DV`. A vertex without limit surface
 /// (isolated, or all its faces holes) has an empty row (`offsets[i] == offsets[i + 1]`),
-/// which `profsubd_stencil_table_apply` turns into NaN; every other row has entries.
+/// which `profsubd_stencil_table_apply` turns into NaN; every other row has entries. Position
+/// stencils are built on the threads `profsubd_options_set_threads` sets (default all cores),
+/// the table the same for any.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_limit_stencils_new(
     mesh: *const profsubd_mesh,
@@ -59,9 +63,12 @@ pub unsafe extern "C" fn profsubd_limit_stencils_new(
         let m = mesh_arg(mesh, "mesh")?;
         let out = arg_out(out, "out")?;
         let opts = resolve(options, m)?;
+        let threads = options_or_default(options)?.threads;
         use profsubd_limit_quantity::*;
         let table = match quantity {
-            q if q == PROFSUBD_LIMIT_POSITION as i32 => limit_stencils(m, &opts)?,
+            q if q == PROFSUBD_LIMIT_POSITION as i32 => {
+                limit_stencils_with(m, &opts, &Control::NONE.with_threads(threads))?
+            }
             q if q == PROFSUBD_LIMIT_DU as i32 => vertex_limit_stencils(m, &opts)?.du,
             q if q == PROFSUBD_LIMIT_DV as i32 => vertex_limit_stencils(m, &opts)?.dv,
             q => {

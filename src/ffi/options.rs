@@ -199,9 +199,10 @@ pub unsafe extern "C" fn profsubd_options_set_crease_method(
 }
 
 /// Set how many threads an evaluator built with these options (`profsubd_evaluator_new`)
-/// uses for its build and its batches of points: 0 (the default) for all cores, 1 for the
-/// calling thread only (`profsubd_evaluator_set_threads` changes it afterwards). Results are
-/// bit for bit the same for every setting.
+/// uses for its build and its batches of points, and the constructions' fits (limit
+/// stencils and solve) use: 0 (the default) for all cores, 1 for the calling thread only
+/// (`profsubd_evaluator_set_threads` changes an evaluator's afterwards). Results are bit for
+/// bit the same for every setting.
 ///
 /// Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `options`.
 #[no_mangle]
@@ -210,7 +211,9 @@ pub unsafe extern "C" fn profsubd_options_set_threads(
     threads: usize,
 ) -> profsubd_status {
     status_call(|| {
-        handle::borrow_mut(options, "options")?.threads = threads;
+        let o = handle::borrow_mut(options, "options")?;
+        o.threads = threads;
+        o.settings.control = o.settings.control.clone().with_threads(threads);
         Ok(())
     })
 }

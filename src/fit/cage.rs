@@ -97,6 +97,20 @@ pub fn fit_cage(
     Ok(FittedCage { mesh, targets, fit })
 }
 
+/// [`vertices_with_surface`] without building a refinement level where no face can be a
+/// hole (none tagged, boundary interpolation other than *none*): then a vertex has a surface
+/// exactly when a face uses it.
+fn surface_vertices(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
+    if !mesh.holes().is_empty() || options.boundary == BoundaryInterpolation::None {
+        return vertices_with_surface(mesh, options);
+    }
+    let mut used = vec![false; mesh.num_vertices()];
+    for &v in mesh.face_indices() {
+        used[v as usize] = true;
+    }
+    used
+}
+
 /// Whether every vertex of `mesh` lies on the limit surface under `options`: a vertex without
 /// limit surface ([`crate::eval::surface`]) cannot interpolate anything. That happens under
 /// boundary interpolation *none* (OpenSubdiv makes the faces at an open boundary holes) and
@@ -105,7 +119,7 @@ pub fn fit_cage(
 /// Errors: [`Error::InvalidArgument`] naming the first such vertex, its data point and the
 /// remedies.
 pub fn check_limit_exists(mesh: &Mesh, options: &SubdivOptions) -> Result<()> {
-    let without: Vec<usize> = vertices_with_surface(mesh, options)
+    let without: Vec<usize> = surface_vertices(mesh, options)
         .iter()
         .enumerate()
         .filter(|(_, &has)| !has)
@@ -140,6 +154,30 @@ pub fn check_limit_exists(mesh: &Mesh, options: &SubdivOptions) -> Result<()> {
 mod tests {
     use super::*;
     use crate::math;
+
+    /// The level-free surface test gives the level's answer: an isolated vertex, with and
+    /// without a hole, under every boundary rule.
+    #[test]
+    fn surface_vertices_without_a_level_agree_with_the_level() {
+        for holes in [vec![], vec![4]] {
+            let mut parts = grid(3, holes);
+            parts.positions.push(DVec3::splat(9.0));
+            let mesh = Mesh::from_parts(parts).unwrap();
+            for boundary in [
+                BoundaryInterpolation::None,
+                BoundaryInterpolation::EdgeOnly,
+                BoundaryInterpolation::EdgeAndCorner,
+            ] {
+                let options = SubdivOptions {
+                    boundary,
+                    ..Default::default()
+                };
+                let quick = surface_vertices(&mesh, &options);
+                assert_eq!(quick, vertices_with_surface(&mesh, &options));
+                assert!(!quick[16], "{boundary:?}");
+            }
+        }
+    }
 
     /// A wavy `n × n` grid of quads; `holes` tagged.
     fn grid(n: u32, holes: Vec<u32>) -> MeshParts {

@@ -23,9 +23,12 @@ pub mod sampling;
 pub mod shapes;
 pub mod silhouettes;
 
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::f64::consts::TAU;
+use std::hash::{BuildHasherDefault, Hasher};
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 pub use input::{ForcedCorners, ProfileInput};
 pub use silhouettes::EndKind;
@@ -87,6 +90,7 @@ pub fn build_cage(input: &ProfileInput, settings: &Settings) -> Result<ProfileCa
         param: &param,
         rings: &rings,
         depth: [offset(bottom, 0), offset(top, 1)],
+        sections: RefCell::default(),
     };
     let (lo, hi) = (design.depth[0], rings.t.len() - 1 - design.depth[1]);
     let mut coords = Vec::new();
@@ -168,11 +172,46 @@ struct ProfileDesign<'a> {
     rings: &'a Rings,
     /// Ring intervals each end's cap or tip replaces.
     depth: [usize; 2],
+    /// The four curves' points at each parameter `s` asked for (by its bits): the lattice
+    /// asks for the same few `s` on every face of a ring strip, and each costs bisections.
+    sections: RefCell<HashMap<u64, [DVec2; 4], BuildHasherDefault<BitsHasher>>>,
+}
+
+/// A multiplicative hash of one `u64` (a parameter's bits): SipHash, the default, cost as
+/// much as the lookup saved.
+#[derive(Default)]
+struct BitsHasher(u64);
+
+impl Hasher for BitsHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0 ^ x ^ (x >> 29)).wrapping_mul(0x9e37_79b9_7f4a_7c15);
+    }
+
+    fn finish(&self) -> u64 {
+        self.0 ^ (self.0 >> 32)
+    }
+}
+
+impl ProfileDesign<'_> {
+    /// [`CommonParam::points`] at `s`, computed once per `s`.
+    fn points(&self, s: f64) -> [DVec2; 4] {
+        *self
+            .sections
+            .borrow_mut()
+            .entry(s.to_bits())
+            .or_insert_with(|| self.param.points(self.sil, s))
+    }
 }
 
 impl Design for ProfileDesign<'_> {
     fn side(&self, s: f64, theta: f64) -> DVec3 {
-        hui_lai::surface(theta, &self.param.points(self.sil, s))
+        hui_lai::surface(theta, &self.points(s))
     }
 
     fn angle(&self, theta: f64) -> f64 {
@@ -182,7 +221,7 @@ impl Design for ProfileDesign<'_> {
     fn cap(&self, end: usize, rho: f64, theta: f64) -> DVec3 {
         if self.sil.ends[end] == EndKind::Flat {
             let t_end = self.rings.t[if end == 0 { 0 } else { self.rings.t.len() - 1 }];
-            let c = self.param.points(self.sil, t_end);
+            let c = self.points(t_end);
             let centre = hui_lai::axis(&c);
             return centre + (hui_lai::surface(theta, &c) - centre) * rho;
         }

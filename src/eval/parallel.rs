@@ -16,8 +16,8 @@ pub(crate) fn resolve_threads(requested: usize) -> usize {
 }
 
 /// `f(range)` for contiguous ranges covering `0..n`, in order, one per thread on up to
-/// `threads` threads (0: all cores; one range, possibly empty, below
-/// `MIN_ITEMS_PER_THREAD` items a thread).
+/// `threads` threads (0: all cores; one range, possibly empty, below `MIN_ITEMS_PER_THREAD`
+/// items a thread). The first range runs on the calling thread.
 pub(crate) fn map_ranges<T: Send>(
     n: usize,
     threads: usize,
@@ -32,13 +32,18 @@ pub(crate) fn map_ranges<T: Send>(
     let chunk = n.div_ceil(threads);
     let f = &f;
     std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..threads)
+        let handles: Vec<_> = (1..threads)
             .map(|t| scope.spawn(move || f(t * chunk..((t + 1) * chunk).min(n))))
             .collect();
-        handles
-            .into_iter()
-            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .collect()
+        // The first range on the calling thread: it is the one that reports progress, and
+        // the C API promises callbacks on the thread that made the call.
+        let mut out = vec![f(0..chunk.min(n))];
+        out.extend(
+            handles
+                .into_iter()
+                .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))),
+        );
+        out
     })
 }
 

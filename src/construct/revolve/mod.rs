@@ -107,7 +107,7 @@ impl RevolveInput {
         } else {
             wedge_parts(self, settings, &profile, &grid, &ring_s)?
         };
-        let lattice = parts_lattice(&parts, &coords, &design);
+        let lattice = parts_lattice(&parts, &coords, &design, &settings.control)?;
         let free = coords
             .iter()
             .map(|c| matches!(c, DesignCoord::Planar))
@@ -319,6 +319,7 @@ pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
             input.angle_deg, input.samples_around, input.samples_profile
         ),
         "other sample counts give other layouts",
+        &settings.control,
     )
 }
 

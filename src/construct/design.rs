@@ -410,6 +410,18 @@ mod tests {
         }
     }
 
+    /// The lattice of one quad on the sphere with these corner coordinates.
+    fn one_face(coords: &[DesignCoord]) -> DesignLattice {
+        design_lattice(
+            &[[0, 1, 2, 3]],
+            coords,
+            &[DVec3::ZERO; 4],
+            &Sphere,
+            &Control::NONE,
+        )
+        .unwrap()
+    }
+
     #[test]
     fn lattices_interpolate_corner_parameters_across_seams_and_caps() {
         let coords = [
@@ -418,14 +430,7 @@ mod tests {
             DesignCoord::Side { s: 0.2, theta: 0.1 },
             DesignCoord::Side { s: 0.2, theta: 6.0 },
         ];
-        let l = design_lattice(
-            &[[0, 1, 2, 3]],
-            &coords,
-            &[DVec3::ZERO; 4],
-            &Sphere,
-            &Control::NONE,
-        )
-        .unwrap();
+        let l = one_face(&coords);
         // The middle of the face straddles θ = 0 (6.0 and 0.1 + 2π average to ≈ 0.05 − π/…).
         let mid = l.points[(LATTICE + 1) * (LATTICE / 2) + LATTICE / 2];
         let theta = 0.5 * (6.0 + 0.1 + TAU);
@@ -453,14 +458,7 @@ mod tests {
                 theta: 2.0,
             },
         ];
-        let l = design_lattice(
-            &[[0, 1, 2, 3]],
-            &coords,
-            &[DVec3::ZERO; 4],
-            &Sphere,
-            &Control::NONE,
-        )
-        .unwrap();
+        let l = one_face(&coords);
         assert!((l.points[0] - DVec3::Z).length() < 1e-14);
         let last = l.points[(LATTICE + 1) * (LATTICE + 1) - 1];
         assert!((last - Sphere.cap(1, 0.5, 1.0)).length() < 1e-14);

@@ -93,6 +93,11 @@ ctest_asan() {
         ctest --test-dir "$BUILD_DIR-asan" -R "$regex" --output-on-failure -j "$JOBS"
 }
 
+# Smoke fuzzing: every fuzz target from its seed corpus for a few seconds (scripts/fuzz.sh),
+# built without ASan (coverage instrumentation and panics only: the ASan build of the whole
+# crate is the long runs' cost); a crash, panic, contract break or input over 10 s fails.
+fuzz_smoke() { FUZZ_SANITIZER=none SECONDS_PER_TARGET="${FUZZ_SECONDS:-10}" scripts/fuzz.sh; }
+
 # The same bytes on every CPU: the examples under emulated CPUs without AVX/FMA.
 determinism() { scripts/check_determinism.sh; }
 
@@ -200,6 +205,7 @@ step "ctest (C++ harness vs OpenSubdiv and OpenMesh)" ctest_all
 step "valgrind --error-exitcode=1 over the C API harness" ctest_valgrind
 step "AddressSanitizer + UBSan: ${ASAN_TESTS[*]}" ctest_asan
 step "determinism: examples byte-identical under qemu64 / Haswell CPUs" determinism
+step "smoke fuzzing: obj_reader, mesh_arrays, construction (scripts/fuzz.sh, no ASan)" fuzz_smoke
 step "cmake --install into a temporary prefix" install_package
 step "C example via find_package(profsubd) (installed package)" example_find_package
 step "C example via pkg-config (installed package)" example_pkg_config

@@ -137,6 +137,40 @@ fn every_long_call_reports_progress_and_cancels() {
     }
 }
 
+/// The stages before and after a construction's fit are polled too (#17 item 5): the layout's
+/// design lattice reports at fraction 0 before the fit's first report, and a partial turn's
+/// fold check reports at 1 after the fit's last; a cancel there stops the call. The fit alone
+/// reports 0 and 1 once each, so cancelling at the third report of either needs those polls.
+#[test]
+fn layout_and_fold_check_are_polled() {
+    let build = |c: &Control| {
+        let mut input = RevolveInput::new(vec![[0.6, 0.0], [0.8, 0.5], [0.4, 1.2], [0.5, 1.6]]);
+        input.angle_deg = 270.0;
+        let settings = Settings {
+            control: c.clone(),
+            ..Settings::default()
+        };
+        revolve::build(&input, &settings).map(drop)
+    };
+    build(&Control::NONE).unwrap();
+    for at in [0.0, 1.0] {
+        let count = Arc::new(Mutex::new(0usize));
+        let seen = count.clone();
+        let control = Control::NONE.with_progress(move |f: f64| {
+            let mut n = seen.lock().unwrap();
+            *n += usize::from(f == at);
+            *n >= 3
+        });
+        match build(&control) {
+            Err(Error::Cancelled(m)) => {
+                assert!(m.contains(&format!("at {:.1} %", 100.0 * at)), "{m}")
+            }
+            other => panic!("at {at}: {other:?}"),
+        }
+        assert_eq!(*count.lock().unwrap(), 3, "at {at}");
+    }
+}
+
 /// SIGINT during a long construction: exit code 130, a message, and no output file.
 #[test]
 fn ctrl_c_stops_the_command_line_cleanly() {

@@ -32,8 +32,9 @@ use std::sync::OnceLock;
 
 use glam::{DVec2, DVec3};
 
+use crate::control::Control;
 use crate::error::Result;
-use crate::eval::folds::{find_folds, FoldSettings};
+use crate::eval::folds::{find_folds_with, FoldSettings};
 use crate::eval::Evaluator;
 use crate::mesh::{Mesh, MeshParts};
 
@@ -100,10 +101,16 @@ impl DesignLattice {
     /// The [`surface_report`] of `mesh` (the fitted mesh of these faces), computed on the
     /// first call and kept. Errors: those of [`surface_report`].
     pub fn report(&self, mesh: &Mesh) -> Result<&SurfaceReport> {
+        self.report_with(mesh, &Control::NONE)
+    }
+
+    /// [`DesignLattice::report`] polling `control` while computing it
+    /// ([`surface_report_with`]); a cancelled computation keeps nothing.
+    pub fn report_with(&self, mesh: &Mesh, control: &Control) -> Result<&SurfaceReport> {
         if let Some(r) = self.report.get() {
             return Ok(r);
         }
-        let r = surface_report(mesh, self)?;
+        let r = surface_report_with(mesh, self, control)?;
         Ok(self.report.get_or_init(|| r))
     }
 }
@@ -121,7 +128,7 @@ pub struct SurfaceReport {
     /// (normal and tangential: how far the limit's parameterization slides along the design
     /// surface, too), over the diagonal.
     pub max_parameter_offset: f64,
-    /// Control faces whose limit surface folds ([`find_folds`], default settings).
+    /// Control faces whose limit surface folds ([`crate::eval::folds::find_folds`], default settings).
     pub folded_faces: usize,
     /// Largest normal reversal found, degrees (above 90 where the surface folds).
     pub worst_reversal_deg: f64,
@@ -169,16 +176,23 @@ enum Chart {
 }
 
 /// The design lattice of the quads `faces` (vertex ids; Ptex face `f` is quad `f`) whose
-/// vertices' data points `points` lie on `design` at `coords`.
+/// vertices' data points `points` lie on `design` at `coords`. `control` is polled once per
+/// face at its start fraction (the layout comes before the fit, whose stages report the
+/// fractions): on a large cage this is the longest un-fitted stage of a construction.
+///
+/// Errors: [`crate::Error::Cancelled`] from `control`.
 pub fn design_lattice(
     faces: &[[u32; 4]],
     coords: &[DesignCoord],
     points: &[DVec3],
     design: &dyn Design,
-) -> DesignLattice {
+    control: &Control,
+) -> Result<DesignLattice> {
     let [ps, pt] = design.periods();
+    let poll = control.stage(0.0, 0.0);
     let mut out = Vec::with_capacity(faces.len() * (LATTICE + 1) * (LATTICE + 1));
-    for f in faces {
+    for (i, f) in faces.iter().enumerate() {
+        poll.step(i, faces.len())?;
         let c = f.map(|v| coords[v as usize]);
         let cap_end = c.iter().find_map(|c| match c {
             DesignCoord::Cap { end, .. } => Some(*end),
@@ -224,10 +238,10 @@ pub fn design_lattice(
             });
         }
     }
-    DesignLattice {
+    Ok(DesignLattice {
         points: out,
         report: OnceLock::new(),
-    }
+    })
 }
 
 /// Smallest sine between a lattice point's two difference derivatives for which it gets a
@@ -294,15 +308,32 @@ fn bending_energy(p: &[DVec3], normal: &[DVec3]) -> f64 {
 /// Compare the fitted `mesh` (all quads, Ptex face = face) with its design lattice: distances,
 /// folds and undulation (see the module documentation).
 ///
-/// Errors: those of [`Evaluator::new`], [`Evaluator::evaluate`] and [`find_folds`].
+/// Errors: those of [`Evaluator::new`], [`Evaluator::evaluate`] and
+/// [`crate::eval::folds::find_folds`].
 pub fn surface_report(mesh: &Mesh, design: &DesignLattice) -> Result<SurfaceReport> {
-    let ev = Evaluator::new(mesh, &mesh.options().resolve())?;
+    surface_report_with(mesh, design, &Control::NONE)
+}
+
+/// [`surface_report`] polling `control` at its end fraction (the report follows the fit):
+/// in the evaluator build, at each face of the lattice comparison and of the fold search
+/// ([`find_folds_with`]).
+///
+/// Errors: those of [`surface_report`]; [`crate::Error::Cancelled`] from `control`.
+pub fn surface_report_with(
+    mesh: &Mesh,
+    design: &DesignLattice,
+    control: &Control,
+) -> Result<SurfaceReport> {
+    let poll = control.stage(1.0, 1.0);
+    let ev = Evaluator::with_control(mesh, &mesh.options().resolve(), &poll)?;
     let per_face = (LATTICE + 1) * (LATTICE + 1);
     let diagonal = mesh.bounding_box_diagonal().max(f64::MIN_POSITIVE);
     let (mut max, mut sum, mut count, mut offset) = (0.0f64, 0.0, 0usize, 0.0f64);
     let (mut limit_energy, mut design_energy) = (0.0, 0.0);
     let mut limit = Vec::with_capacity(per_face);
+    let faces = design.points.len() / per_face;
     for (f, want) in design.points.chunks(per_face).enumerate() {
+        poll.step(f, faces)?;
         if !ev.has_surface(f as u32) {
             continue;
         }
@@ -322,7 +353,7 @@ pub fn surface_report(mesh: &Mesh, design: &DesignLattice) -> Result<SurfaceRepo
         limit_energy += bending_energy(&limit, &lattice_normals(&limit));
         design_energy += bending_energy(want, &normals);
     }
-    let folds = find_folds(&ev, &FoldSettings::default())?;
+    let folds = find_folds_with(&ev, &FoldSettings::default(), control)?;
     Ok(SurfaceReport {
         max_design_distance: max / diagonal,
         mean_design_distance: sum / count.max(1) as f64 / diagonal,
@@ -337,18 +368,20 @@ pub fn surface_report(mesh: &Mesh, design: &DesignLattice) -> Result<SurfaceRepo
     })
 }
 
-/// The design lattice of quad mesh parts whose vertices lie on `design` at `coords`.
+/// The design lattice of quad mesh parts whose vertices lie on `design` at `coords`, polling
+/// `control` ([`design_lattice`]).
 pub fn parts_lattice(
     parts: &MeshParts,
     coords: &[DesignCoord],
     design: &dyn Design,
-) -> DesignLattice {
+    control: &Control,
+) -> Result<DesignLattice> {
     let faces: Vec<[u32; 4]> = parts
         .face_indices
         .chunks_exact(4)
         .map(|f| [f[0], f[1], f[2], f[3]])
         .collect();
-    design_lattice(&faces, coords, &parts.positions, design)
+    design_lattice(&faces, coords, &parts.positions, design, control)
 }
 
 #[cfg(test)]
@@ -377,6 +410,18 @@ mod tests {
         }
     }
 
+    /// The lattice of one quad on the sphere with these corner coordinates.
+    fn one_face(coords: &[DesignCoord]) -> DesignLattice {
+        design_lattice(
+            &[[0, 1, 2, 3]],
+            coords,
+            &[DVec3::ZERO; 4],
+            &Sphere,
+            &Control::NONE,
+        )
+        .unwrap()
+    }
+
     #[test]
     fn lattices_interpolate_corner_parameters_across_seams_and_caps() {
         let coords = [
@@ -385,7 +430,7 @@ mod tests {
             DesignCoord::Side { s: 0.2, theta: 0.1 },
             DesignCoord::Side { s: 0.2, theta: 6.0 },
         ];
-        let l = design_lattice(&[[0, 1, 2, 3]], &coords, &[DVec3::ZERO; 4], &Sphere);
+        let l = one_face(&coords);
         // The middle of the face straddles θ = 0 (6.0 and 0.1 + 2π average to ≈ 0.05 − π/…).
         let mid = l.points[(LATTICE + 1) * (LATTICE / 2) + LATTICE / 2];
         let theta = 0.5 * (6.0 + 0.1 + TAU);
@@ -413,7 +458,7 @@ mod tests {
                 theta: 2.0,
             },
         ];
-        let l = design_lattice(&[[0, 1, 2, 3]], &coords, &[DVec3::ZERO; 4], &Sphere);
+        let l = one_face(&coords);
         assert!((l.points[0] - DVec3::Z).length() < 1e-14);
         let last = l.points[(LATTICE + 1) * (LATTICE + 1) - 1];
         assert!((last - Sphere.cap(1, 0.5, 1.0)).length() < 1e-14);

@@ -9,7 +9,7 @@ use crate::construct::design::{DesignLattice, SurfaceReport};
 use crate::construct::settings::Settings;
 use crate::control::Control;
 use crate::error::{Error, Result};
-use crate::eval::folds::{find_folds, FoldSettings};
+use crate::eval::folds::{find_folds_with, FoldSettings};
 use crate::eval::Evaluator;
 use crate::fit::{fit_cage, FitOptions, FitReport, FittedCage, Role};
 use crate::mesh::{Mesh, MeshParts};
@@ -104,14 +104,16 @@ impl Fitted {
     /// where the worst reversal lies, then `hint` (what to change): a construction whose
     /// layout is not known to be fold-free for every input refuses rather than return a
     /// folded surface. Errors: those of the evaluation.
-    pub(crate) fn refuse_folds(self, what: &str, hint: &str) -> Result<Fitted> {
-        let folded = self.surface_report()?.folded_faces;
+    /// `control` is polled while the report is computed ([`DesignLattice::report_with`]).
+    pub(crate) fn refuse_folds(self, what: &str, hint: &str, control: &Control) -> Result<Fitted> {
+        let folded = self.design.report_with(&self.mesh, control)?.folded_faces;
         if folded == 0 {
             return Ok(self);
         }
         // Only on refusal: which faces and where the worst reversal is, for the message.
-        let ev = Evaluator::new(&self.mesh, &self.mesh.options().resolve())?;
-        let folds = find_folds(&ev, &FoldSettings::default())?;
+        let poll = control.stage(1.0, 1.0);
+        let ev = Evaluator::with_control(&self.mesh, &self.mesh.options().resolve(), &poll)?;
+        let folds = find_folds_with(&ev, &FoldSettings::default(), control)?;
         let (face, u, v) = folds.worst_at.unwrap_or((0, 0.5, 0.5));
         let p = ev.evaluate(face as u32, u, v)?.position;
         let faces = folds.folded_face_indices();

@@ -52,6 +52,7 @@ use glam::DVec3;
 
 use super::Evaluator;
 use crate::catmark::crease::is_infinite;
+use crate::control::Control;
 use crate::error::{Error, Result};
 use crate::topology::Level;
 
@@ -145,7 +146,20 @@ impl FoldReport {
 /// `adaptive_depth` above 16 or a `refine_turn_deg` outside `(0, 180]`; errors of the
 /// evaluation ([`Error::NumericalFailure`]).
 pub fn find_folds(evaluator: &Evaluator, settings: &FoldSettings) -> Result<FoldReport> {
+    find_folds_with(evaluator, settings, &Control::NONE)
+}
+
+/// [`find_folds`] polling `control` at each parametric face (at its end fraction: a
+/// construction's fold check follows its fit).
+///
+/// Errors: those of [`find_folds`]; [`Error::Cancelled`] from `control`.
+pub fn find_folds_with(
+    evaluator: &Evaluator,
+    settings: &FoldSettings,
+    control: &Control,
+) -> Result<FoldReport> {
     check_settings(settings)?;
+    let poll = control.stage(1.0, 1.0);
     let mesh = evaluator.mesh();
     let level = Level::from_mesh_with_options(mesh, evaluator.options());
     let mut report = FoldReport {
@@ -156,7 +170,9 @@ pub fn find_folds(evaluator: &Evaluator, settings: &FoldSettings) -> Result<Fold
         faces_checked: 0,
         samples: 0,
     };
-    for ptex in 0..evaluator.num_parametric_faces() as u32 {
+    let nptex = evaluator.num_parametric_faces();
+    for ptex in 0..nptex as u32 {
+        poll.step(ptex as usize, nptex)?;
         if !evaluator.has_surface(ptex) {
             continue;
         }

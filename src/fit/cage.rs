@@ -87,6 +87,8 @@ pub fn fit_cage(
     control.report(0.05)?;
     let resolved = options.resolve();
     check_limit_exists(&cage, &resolved)?;
+    // The check above is one evaluation per vertex: a poll between it and the fit.
+    control.report(0.08)?;
     let (mesh, targets, fit) = fit_limit(
         &cage,
         &resolved,

@@ -264,7 +264,13 @@ impl CurvesInput {
             .iter()
             .map(|p| DesignCoord::Side { s: p.x, theta: p.y })
             .collect();
-        let lattice = design_lattice(&grid.faces, &coords, &parts.positions, &BlendDesign(&blend));
+        let lattice = design_lattice(
+            &grid.faces,
+            &coords,
+            &parts.positions,
+            &BlendDesign(&blend),
+            &settings.control,
+        )?;
         Ok((parts, lattice))
     }
 }
@@ -306,5 +312,6 @@ pub fn build(input: &CurvesInput, settings: &Settings) -> Result<Fitted> {
             input.tau
         ),
         "fewer samples or another tau give another layout",
+        &settings.control,
     )
 }

@@ -151,7 +151,7 @@ pub fn build_cage(input: &ProfileInput, settings: &Settings) -> Result<ProfileCa
         crease_rings.push(r);
     }
     let parts = b.finish(settings.fit_options().tags());
-    let design = parts_lattice(&parts, &coords, &design);
+    let design = parts_lattice(&parts, &coords, &design, &settings.control)?;
     Ok(ProfileCage {
         parts,
         ends: sil.ends,

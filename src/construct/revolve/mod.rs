@@ -110,7 +110,7 @@ impl RevolveInput {
         } else {
             wedge_parts(self, settings, &profile, &grid, &ring_s)?
         };
-        let lattice = parts_lattice(&parts, &coords, &design);
+        let lattice = parts_lattice(&parts, &coords, &design, &settings.control)?;
         Ok((parts, lattice, roles))
     }
 
@@ -335,6 +335,7 @@ pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
             input.angle_deg, input.samples_around, input.samples_profile
         ),
         "other sample counts give other layouts",
+        &settings.control,
     )
 }
 

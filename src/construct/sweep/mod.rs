@@ -282,7 +282,7 @@ impl SweepInput {
             scale,
             coarse: [grid.rings.len(), grid.rings[0].len()],
         };
-        let lattice = parts_lattice(&parts, &coords, &design);
+        let lattice = parts_lattice(&parts, &coords, &design, &settings.control)?;
         Ok((parts, lattice))
     }
 }

@@ -15,6 +15,8 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 SECONDS_PER_TARGET="${SECONDS_PER_TARGET:-20}"
+# An input running longer than this (wall time) is a hang finding.
+FUZZ_TIMEOUT="${FUZZ_TIMEOUT:-10}"
 FLAGS=(-O --debug-assertions --sanitizer "${FUZZ_SANITIZER:-address}")
 SHAPES="${PROFSUBD_OSD_SHAPES:-$PWD/../shared/conformance/osd_shapes}"
 export PATH="$HOME/.cargo/bin:$PATH"
@@ -33,9 +35,9 @@ for target in obj_reader mesh_arrays construction; do
         # and coverage on a loaded machine: a slow seed, not a hang.
         rm -f "$corpus"/*360*.obj
     fi
-    # -timeout: an input taking over 10 s is a hang finding; -rss_limit_mb: an OOM finding.
+    # -timeout: an input taking over FUZZ_TIMEOUT s is a hang finding; -rss_limit_mb: an OOM finding.
     cargo +nightly fuzz run "$target" "${FLAGS[@]}" "$corpus" -- \
-        -max_total_time="$SECONDS_PER_TARGET" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+        -max_total_time="$SECONDS_PER_TARGET" -timeout="$FUZZ_TIMEOUT" -rss_limit_mb=2048 -max_len=65536 \
         -print_final_stats=1 2>&1 | grep -E "^(stat::|INFO: Running|#[0-9]+.*DONE|==[0-9]+==|Done)" || true
     # The pipeline hides the fuzzer's status: a finding leaves an artifact (crash-, leak-,
     # timeout-, oom-; slow-unit- files only note inputs over 10 s of wall time, which a

@@ -16,6 +16,7 @@
 //! options and fits it under them.
 
 pub mod cage;
+pub mod fair;
 
 pub use cage::{fit_cage, FitOptions, FittedCage};
 

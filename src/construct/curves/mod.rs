@@ -49,6 +49,7 @@ use crate::construct::fitted::Fitted;
 use crate::construct::settings::{Caps, Settings, MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
 use crate::curves::SpaceCurve;
 use crate::error::{Error, Result};
+use crate::fit::fair;
 use crate::mesh::MeshParts;
 use blend::Blend;
 use grid::SquareGrid;
@@ -83,6 +84,20 @@ impl<'de> Deserialize<'de> for Projection {
     }
 }
 
+/// How the points of the grid between the curves are found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// The paper's attraction blend, eqs. (5)–(8), at every node (JSON `"attraction"`). The
+    /// default.
+    #[default]
+    Attraction,
+    /// Variational (JSON `"fair"`): the nodes on a curve keep their curve points; the others
+    /// minimize the discrete bending energy `Σ |Δ S|²` of the limit points over the mesh
+    /// ([`crate::fit::fair`]). `tau` is not used.
+    Fair,
+}
+
 /// Sketch curves to a surface: see the module documentation for the JSON form and defaults.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -101,6 +116,9 @@ pub struct CurvesInput {
     /// The projection plane. Default auto.
     #[serde(default)]
     pub projection: Projection,
+    /// The attraction blend or the fair variant. Default the blend.
+    #[serde(default)]
+    pub method: Method,
 }
 
 fn default_tau() -> f64 {
@@ -122,6 +140,7 @@ impl CurvesInput {
             tau: default_tau(),
             samples: default_samples(),
             projection: Projection::Auto,
+            method: Method::Attraction,
         }
     }
 
@@ -253,18 +272,26 @@ impl CurvesInput {
         }
     }
 
-    /// The cage (each vertex at its blended point) and the design lattice: the design
-    /// surface is the blend itself, at the bilinear interpolation of a face's corner `(u, v)`.
+    /// The cage and the design lattice: the design surface is the blend itself, at the
+    /// bilinear interpolation of a face's corner `(u, v)`. Under [`Method::Attraction`] each
+    /// vertex is at its blended point; under [`Method::Fair`] the vertices on a curve are
+    /// (their blended point is the curve point) and the others minimize the bending energy
+    /// ([`crate::fit::fair::minimize`], started from their blended points).
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
         let blend = self.blend(settings)?;
         let grid = self.grid(&blend);
-        let parts = grid.parts(&blend);
+        let mut parts = grid.parts(&blend);
         let coords: Vec<DesignCoord> = grid
             .uv
             .iter()
             .map(|p| DesignCoord::Side { s: p.x, theta: p.y })
             .collect();
         let lattice = design_lattice(&grid.faces, &coords, &parts.positions, &BlendDesign(&blend));
+        if self.method == Method::Fair {
+            let fixed: Vec<bool> = grid.uv.iter().map(|&p| blend.on_curve(p)).collect();
+            let rows = fair::laplacian_rows(&grid.faces, grid.uv.len());
+            parts.positions = fair::minimize(&rows, &fixed, &parts.positions, &settings.control)?;
+        }
         Ok((parts, lattice))
     }
 }
@@ -301,9 +328,12 @@ pub fn build(input: &CurvesInput, settings: &Settings) -> Result<Fitted> {
     let [nu, nv] = input.samples;
     Fitted::fit(parts, settings, design)?.refuse_folds(
         &format!(
-            "curves ({} interior, tau = {}, {nu} x {nv} samples)",
+            "curves ({} interior, {}, {nu} x {nv} samples)",
             input.interior.len(),
-            input.tau
+            match input.method {
+                Method::Attraction => format!("tau = {}", input.tau),
+                Method::Fair => "method fair".to_string(),
+            }
         ),
         "fewer samples or another tau give another layout",
     )

@@ -1,16 +1,21 @@
 //! Fair data points: where only some vertices of a quad mesh carry data, place the others so
-//! that the points minimize a discrete bending energy, then fit as usual.
+//! that the points minimize a discrete thin-plate (bending) energy, then fit as usual.
 //!
-//! The energy is `E(y) = Σ_v |L y_v|²` over the mesh's interior vertices, `L` the umbrella
-//! Laplacian scaled to a unit grid, `(4/k) Σ_{w ~ v} (y_w − y_v)` for a vertex of valence `k`
-//! (at a regular vertex the 5-point Laplacian `y_uu + y_vv` with unit spacing). Applied to the
-//! limit positions of the control vertices it is the discrete `∫ |ΔS|²` of the limit surface
-//! in the mesh's own parameterization (every quad a unit square). That functional and the
-//! thin-plate `∫ |S_uu|² + 2|S_uv|² + |S_vv|²` differ by a null Lagrangian (their minimizers
-//! solve the same biharmonic equation inside); at a boundary where only positions are given
-//! the Laplacian form's natural condition is `ΔS = 0`, so harmonic surfaces (planes, the
-//! saddle `z = x² − y²` on a square grid) are reproduced exactly from their boundaries, which
-//! the thin-plate form's `S_nn = 0` does not do.
+//! The mesh lies over a plane: each vertex has a position `q_v` in it (for sketch curves, the
+//! Coons map of the projected boundary). The energy is the thin-plate energy of the surface
+//! as a function over that plane, `E = ∫ |ΔS|² dA ≈ Σ_v A_v |Δ_h S(v)|²` over the interior
+//! vertices, `Δ_h` a finite-difference Laplacian in the plane from the vertex's ring (every
+//! vertex of its faces): the weights of least norm that are exact for every quadratic
+//! function of `q` (so exact for the planar parts of the points, which are linear in `q`),
+//! `A_v` the squared mean ring distance. Applied to the limit positions of the control
+//! vertices (the fit makes them these points) it is the discrete `∫ |ΔS|²` of the limit
+//! surface. `∫ |ΔS|²` and the thin-plate `∫ S_xx² + 2 S_xy² + S_yy²` differ by a null
+//! Lagrangian: their minimizers solve the same biharmonic equation inside; at a boundary
+//! where only positions are given, the Laplacian form's natural condition is `ΔS = 0`, so
+//! harmonic height fields (planes, the saddle `z = x² − y²`) are reproduced exactly from
+//! their boundaries, which the thin-plate form's `S_nn = 0` does not do. The in-plane parts
+//! of the minimizer are the `q_v` themselves (linear, zero energy): the fair surface is a
+//! height field over the plane, the heights minimizing the energy.
 //!
 //! Minimizing over the free vertices with the others fixed is the sparse symmetric
 //! positive-definite system `H_ff δ_f = −(Lᵀ L y₀)_f` (`y = y₀ + δ`, `y₀` the caller's
@@ -20,9 +25,9 @@
 //! fixed order, the same bits on every CPU, like the fit's solvers ([`super::solve`]).
 //! The limit surface through the result is then [`super::fit_limit`]'s.
 
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 
 use crate::control::Control;
 use crate::error::{Error, Result};
@@ -30,35 +35,101 @@ use crate::error::{Error, Result};
 /// One row of the energy operator: `(vertex, weight)` pairs.
 pub type EnergyRow = Vec<(u32, f64)>;
 
-/// The umbrella Laplacian rows of the quad mesh `faces` over `num_vertices` vertices: one row
-/// per interior vertex (every edge around it shared by two faces), in vertex order.
-pub fn laplacian_rows(faces: &[[u32; 4]], num_vertices: usize) -> Vec<EnergyRow> {
-    let mut neighbours: Vec<BTreeSet<u32>> = vec![BTreeSet::new(); num_vertices];
-    let mut edge_faces: std::collections::BTreeMap<(u32, u32), usize> = Default::default();
+/// The energy rows of the quad mesh `faces` whose vertices lie at `plane` positions: one row
+/// per interior vertex (every edge around it shared by two faces), in vertex order, `√A_v`
+/// times its quadratic-exact Laplacian (module documentation).
+///
+/// Errors: [`Error::NumericalFailure`] if a vertex's ring determines no such Laplacian (its
+/// ring's positions on one conic, e.g. all on a line).
+pub fn laplacian_rows(faces: &[[u32; 4]], plane: &[DVec2]) -> Result<Vec<EnergyRow>> {
+    let n = plane.len();
+    let mut ring: Vec<BTreeSet<u32>> = vec![BTreeSet::new(); n];
+    let mut edge_faces: BTreeMap<(u32, u32), usize> = BTreeMap::new();
     for f in faces {
         for k in 0..4 {
             let (a, b) = (f[k], f[(k + 1) % 4]);
-            neighbours[a as usize].insert(b);
-            neighbours[b as usize].insert(a);
             *edge_faces.entry((a.min(b), a.max(b))).or_default() += 1;
+            for &w in f {
+                if w != f[k] {
+                    ring[f[k] as usize].insert(w);
+                }
+            }
         }
     }
-    let mut on_boundary = vec![false; num_vertices];
-    for (&(a, b), &n) in &edge_faces {
-        if n == 1 {
+    let mut on_boundary = vec![false; n];
+    for (&(a, b), &count) in &edge_faces {
+        if count == 1 {
             on_boundary[a as usize] = true;
             on_boundary[b as usize] = true;
         }
     }
-    (0..num_vertices)
-        .filter(|&v| !on_boundary[v] && !neighbours[v].is_empty())
-        .map(|v| {
-            let w = 4.0 / neighbours[v].len() as f64;
-            std::iter::once((v as u32, -4.0))
-                .chain(neighbours[v].iter().map(|&n| (n, w)))
-                .collect()
-        })
-        .collect()
+    let mut rows = Vec::new();
+    for v in (0..n).filter(|&v| !on_boundary[v] && !ring[v].is_empty()) {
+        let offsets: Vec<DVec2> = ring[v]
+            .iter()
+            .map(|&w| plane[w as usize] - plane[v])
+            .collect();
+        let r = offsets.iter().map(|d| d.length()).sum::<f64>() / offsets.len() as f64;
+        let weights = quadratic_laplacian(&offsets, r).ok_or_else(|| {
+            Error::NumericalFailure(format!(
+                "fair points: the ring of vertex {v} determines no Laplacian (its neighbours' \
+                 plane positions are degenerate)"
+            ))
+        })?;
+        // Row = r × (weights for unit-scaled offsets) / r²: √A_v times the Laplacian.
+        let total: f64 = weights.iter().sum();
+        let mut row: EnergyRow = vec![(v as u32, -total / r)];
+        row.extend(ring[v].iter().zip(&weights).map(|(&w, &c)| (w, c / r)));
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// Weights `w` of least norm with `Σ w_k f(d_k / r) = Δf(0)` for every quadratic `f` with
+/// `f(0) = 0` (the five conditions on `x, y, x², xy, y²`); `None` if they are dependent.
+fn quadratic_laplacian(offsets: &[DVec2], r: f64) -> Option<Vec<f64>> {
+    let basis = |d: DVec2| {
+        let d = d / r;
+        [d.x, d.y, d.x * d.x, d.x * d.y, d.y * d.y]
+    };
+    let rows: Vec<[f64; 5]> = offsets.iter().map(|&d| basis(d)).collect();
+    // w = Mᵀ (M Mᵀ)⁻¹ b, with M's columns the offsets' basis values.
+    let mut g = [[0.0; 6]; 5];
+    for (i, gi) in g.iter_mut().enumerate() {
+        for j in 0..5 {
+            gi[j] = rows.iter().map(|b| b[i] * b[j]).sum();
+        }
+    }
+    for (i, gi) in g.iter_mut().enumerate() {
+        gi[5] = [0.0, 0.0, 2.0, 0.0, 2.0][i];
+    }
+    let scale = (0..5).map(|i| g[i][i]).fold(0.0, f64::max);
+    for k in 0..5 {
+        let p = (k..5).max_by(|&a, &b| g[a][k].abs().total_cmp(&g[b][k].abs()))?;
+        if !(g[p][k].abs() > 1e-12 * scale) {
+            return None;
+        }
+        g.swap(k, p);
+        for i in k + 1..5 {
+            let l = g[i][k] / g[k][k];
+            for j in k..6 {
+                g[i][j] -= l * g[k][j];
+            }
+        }
+    }
+    let mut lambda = [0.0; 5];
+    for i in (0..5).rev() {
+        let mut sum = g[i][5];
+        for j in i + 1..5 {
+            sum -= g[i][j] * lambda[j];
+        }
+        lambda[i] = sum / g[i][i];
+    }
+    Some(
+        rows.iter()
+            .map(|b| (0..5).map(|i| b[i] * lambda[i]).sum())
+            .collect(),
+    )
 }
 
 /// Estimated bytes of [`minimize`] for `free` unknowns of a band `band` wide.
@@ -247,18 +318,24 @@ mod tests {
     fn grid(n: usize) -> Vec<[u32; 4]> {
         let id = |i: usize, j: usize| (j * (n + 1) + i) as u32;
         (0..n)
-            .flat_map(|j| (0..n).map(move |i| [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)]))
+            .flat_map(|j| {
+                (0..n).map(move |i| [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)])
+            })
             .collect()
     }
 
     #[test]
     fn reproduces_a_harmonic_saddle_from_its_boundary() {
-        // z = x² − y² has a zero 5-point Laplacian on a square grid: zero energy, so the
+        // z = x² − y² is harmonic and quadratic: the stencils give it zero energy, so the
         // minimizer from its boundary values alone is the saddle itself at every vertex.
         let n = 12;
         let faces = grid(n);
+        let warp = |t: f64| t + 0.2 * t * (1.0 - t);
         let at = |v: usize| {
-            let (x, y) = ((v % (n + 1)) as f64 / n as f64, (v / (n + 1)) as f64 / n as f64);
+            let (x, y) = (
+                warp((v % (n + 1)) as f64 / n as f64),
+                warp((v / (n + 1)) as f64 / n as f64),
+            );
             DVec3::new(x, y, x * x - y * y)
         };
         let count = (n + 1) * (n + 1);
@@ -266,22 +343,44 @@ mod tests {
             .map(|v| v % (n + 1) == 0 || v % (n + 1) == n || v / (n + 1) == 0 || v / (n + 1) == n)
             .collect();
         let start: Vec<DVec3> = (0..count)
-            .map(|v| if fixed[v] { at(v) } else { DVec3::new(0.3, -0.2, 5.0) })
+            .map(|v| {
+                if fixed[v] {
+                    at(v)
+                } else {
+                    DVec3::new(0.3, -0.2, 5.0)
+                }
+            })
             .collect();
-        let rows = laplacian_rows(&faces, count);
+        // Columns and rows spaced unevenly: a tensor grid of the plane.
+        let plane: Vec<DVec2> = (0..count)
+            .map(|v| {
+                DVec2::new(
+                    warp((v % (n + 1)) as f64 / n as f64),
+                    warp((v / (n + 1)) as f64 / n as f64),
+                )
+            })
+            .collect();
+        let rows = laplacian_rows(&faces, &plane).unwrap();
         assert_eq!(rows.len(), (n - 1) * (n - 1));
         let y = minimize(&rows, &fixed, &start, &Control::NONE).unwrap();
-        let worst = (0..count).map(|v| (y[v] - at(v)).length()).fold(0.0, f64::max);
+        let worst = (0..count)
+            .map(|v| (y[v] - at(v)).length())
+            .fold(0.0, f64::max);
         assert!(worst < 1e-12, "{worst:e}");
     }
 
     #[test]
-    fn a_free_vertex_no_row_reaches_is_refused() {
-        let faces = grid(2);
-        let mut fixed = vec![true; 9];
-        fixed[0] = false; // a corner: the only interior vertex (the centre) is not its neighbour
-        let rows = laplacian_rows(&faces, 9);
-        match minimize(&rows, &fixed, &[DVec3::ZERO; 9], &Control::NONE) {
+    fn a_free_vertex_in_no_row_is_refused() {
+        // Two quads side by side: no interior vertex, so no row reaches the free vertex 1.
+        let faces = [[0, 1, 4, 3], [1, 2, 5, 4]];
+        let plane: Vec<DVec2> = (0..6)
+            .map(|v| DVec2::new((v % 3) as f64, (v / 3) as f64))
+            .collect();
+        let rows = laplacian_rows(&faces, &plane).unwrap();
+        assert!(rows.is_empty());
+        let mut fixed = vec![true; 6];
+        fixed[1] = false;
+        match minimize(&rows, &fixed, &[DVec3::ZERO; 6], &Control::NONE) {
             Err(Error::NumericalFailure(m)) => assert!(m.contains("does not determine"), "{m}"),
             other => panic!("{other:?}"),
         }
@@ -291,8 +390,11 @@ mod tests {
     fn orders_a_grid_to_a_band_of_about_one_row() {
         let n = 10;
         let faces = grid(n);
-        let rows = laplacian_rows(&faces, (n + 1) * (n + 1));
         let count = (n + 1) * (n + 1);
+        let plane: Vec<DVec2> = (0..count)
+            .map(|v| DVec2::new((v % (n + 1)) as f64, (v / (n + 1)) as f64))
+            .collect();
+        let rows = laplacian_rows(&faces, &plane).unwrap();
         let mut graph: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); count];
         for row in &rows {
             for &(a, _) in row {
@@ -316,7 +418,7 @@ mod tests {
             .map(|(a, b)| pos[a].abs_diff(pos[b]))
             .max()
             .unwrap();
-        // The Laplacian-squared stencil reaches two grid rows away: at most ~3 rows' width.
-        assert!(band <= 3 * (n + 1), "{band}");
+        // A row couples vertices two grid rows apart: at most ~4 rows' width.
+        assert!(band <= 4 * (n + 1), "{band}");
     }
 }

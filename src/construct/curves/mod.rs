@@ -33,6 +33,8 @@
 //! boundary's order by the right-hand rule.
 
 pub mod blend;
+#[cfg(test)]
+mod fair_tests;
 pub mod grid;
 pub mod preimage;
 pub mod projection;
@@ -93,8 +95,9 @@ pub enum Method {
     #[default]
     Attraction,
     /// Variational (JSON `"fair"`): the nodes on a curve keep their curve points; the others
-    /// minimize the discrete bending energy `Σ |Δ S|²` of the limit points over the mesh
-    /// ([`crate::fit::fair`]). `tau` is not used.
+    /// minimize the discrete thin-plate energy `∫ |ΔS|²` of the limit surface over the
+    /// projection plane, each node over its Coons-map point ([`crate::fit::fair`]). `tau` is
+    /// not used.
     Fair,
 }
 
@@ -266,7 +269,7 @@ impl CurvesInput {
     pub fn grid(&self, blend: &Blend) -> SquareGrid {
         let [nu, nv] = self.samples;
         if blend.boundary.three_sided {
-            SquareGrid::three_sided(nu.max(nv).div_ceil(2))
+            SquareGrid::three_sided(nu.max(nv).div_ceil(2), blend)
         } else {
             SquareGrid::four_sided(nu, nv, blend)
         }
@@ -275,8 +278,9 @@ impl CurvesInput {
     /// The cage and the design lattice: the design surface is the blend itself, at the
     /// bilinear interpolation of a face's corner `(u, v)`. Under [`Method::Attraction`] each
     /// vertex is at its blended point; under [`Method::Fair`] the vertices on a curve are
-    /// (their blended point is the curve point) and the others minimize the bending energy
-    /// ([`crate::fit::fair::minimize`], started from their blended points).
+    /// (their blended point is the curve point) and the others minimize the thin-plate
+    /// energy of the surface over the projection plane, the vertices placed in the plane by
+    /// the Coons map ([`crate::fit::fair`], started from their blended points).
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
         let blend = self.blend(settings)?;
         let grid = self.grid(&blend);
@@ -289,7 +293,12 @@ impl CurvesInput {
         let lattice = design_lattice(&grid.faces, &coords, &parts.positions, &BlendDesign(&blend));
         if self.method == Method::Fair {
             let fixed: Vec<bool> = grid.uv.iter().map(|&p| blend.on_curve(p)).collect();
-            let rows = fair::laplacian_rows(&grid.faces, grid.uv.len());
+            let plane: Vec<DVec2> = grid
+                .uv
+                .iter()
+                .map(|p| blend.boundary.map(p.x, p.y))
+                .collect();
+            let rows = fair::laplacian_rows(&grid.faces, &plane)?;
             parts.positions = fair::minimize(&rows, &fixed, &parts.positions, &settings.control)?;
         }
         Ok((parts, lattice))

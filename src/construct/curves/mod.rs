@@ -5,7 +5,7 @@
 //! ```json
 //! { "boundary": [[[x,y,z],...], [[x,y,z],...], [[x,y,z],...], [[x,y,z],...]],
 //!   "interior": [[[x,y,z],...], ...], "tau": 2, "samples": [16, 16],
-//!   "projection": "auto", "interpolation": "spline" }
+//!   "projection": "auto", "method": "attraction", "interpolation": "spline" }
 //! ```
 //! Keys: `boundary` (required: 3 or 4 point lists in order around the patch; each runs on
 //! from the previous one: a curve whose end is nearer the previous curve's end than its start
@@ -14,7 +14,8 @@
 //! clipped), `tau` (τ ≥ 0 of eqs. (5)–(7), default 2), `samples` (`[nu, nv]` quads along the
 //! first and second boundary curve's directions, default `[16, 16]`; a 3-sided patch uses
 //! `k = ⌈max(nu, nv)/2⌉`, see [`grid`]), `projection` (`"auto"`, the default: the best-fit
-//! plane of all curve points; or a normal `[x, y, z]`). The shared [`Settings`] keys apply
+//! plane of all curve points; or a normal `[x, y, z]`), `method` (`"attraction"`, the
+//! default: the paper's blend; `"fair"`: [`Method::Fair`]). The shared [`Settings`] keys apply
 //! (`interpolation`: curves as splines or polylines; `crease_method`: what the mesh is fitted
 //! under; `caps` must stay `"open"`). Here `boundary` is the curves (an array); the boundary
 //! *rule* the mesh is fitted under (default edge-and-corner) then comes from the command

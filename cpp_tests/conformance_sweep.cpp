@@ -499,6 +499,6 @@ int main() {
         }
     }
     ck.set_context("");
-    ck.equal(models.size(), size_t(27), "every model built");
+    ck.equal(models.size(), size_t(29), "every model built");
     return ck.finish();
 }

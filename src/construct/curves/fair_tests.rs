@@ -2,7 +2,7 @@
 
 use super::tests::{
     assert_manifold, assert_valid, bonnet, cylinder, distance_to_surface, fit_unguarded,
-    limit_error, line, saddle,
+    limit_error, line, saddle, tilted_plane, tilted_quadrilateral, TILTED,
 };
 use super::*;
 use crate::eval::Evaluator;
@@ -150,24 +150,14 @@ fn curvature(fitted: &Fitted) -> (f64, f64, f64) {
 
 #[test]
 fn fair_planar_input_gives_a_planar_limit() {
-    // A tilted plane: four straight sides and a straight interior stroke in it.
-    let (o, e1, e2) = (
-        DVec3::new(0.3, -0.2, 1.0),
-        DVec3::new(2.0, 1.0, 0.5),
-        DVec3::new(-0.4, 1.0, 1.5),
-    );
-    let at = |a: f64, b: f64| (o + e1 * a + e2 * b).to_array();
-    let corners = [(0.0, 0.0), (1.0, 0.1), (1.2, 0.9), (-0.1, 1.1)];
-    let side = |k: usize| -> Vec<[f64; 3]> {
-        let (a, b) = (corners[k], corners[(k + 1) % 4]);
-        [0.0, 0.2, 0.45, 1.0]
-            .iter()
-            .map(|&t| at(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)))
-            .collect()
-    };
-    let mut input = fair(CurvesInput::new((0..4).map(side).collect()));
-    input.interior = vec![vec![at(0.2, 0.3), at(0.5, 0.6), at(0.9, 0.7)]];
-    input.samples = [12, 9];
+    // The tilted quadrilateral with a straight interior stroke in its plane.
+    let mut input = fair(tilted_quadrilateral());
+    input.interior = vec![vec![
+        tilted_plane(0.2, 0.3),
+        tilted_plane(0.5, 0.6),
+        tilted_plane(0.9, 0.7),
+    ]];
+    let (o, e1, e2) = TILTED;
     let fitted = build(&input, &Settings::default()).unwrap();
     let n = e1.cross(e2).normalize();
     let worst = limit_error(&fitted, &|p| (p - o).dot(n));

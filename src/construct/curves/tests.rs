@@ -98,26 +98,39 @@ pub(super) fn assert_manifold(fitted: &Fitted) {
     assert!(fitted.fit.residual <= 1e-10 * fitted.mesh.bounding_box_diagonal());
 }
 
-#[test]
-fn planar_quadrilateral_gives_a_planar_limit() {
-    // A skew quadrilateral in a tilted plane, straight sides with uneven point spacing.
-    let (o, e1, e2) = (
-        DVec3::new(0.3, -0.2, 1.0),
-        DVec3::new(2.0, 1.0, 0.5),
-        DVec3::new(-0.4, 1.0, 1.5),
-    );
-    let at = |a: f64, b: f64| (o + e1 * a + e2 * b).to_array();
+/// The point `o + a e1 + b e2` of the tilted plane of [`tilted_quadrilateral`].
+pub(super) fn tilted_plane(a: f64, b: f64) -> [f64; 3] {
+    let (o, e1, e2) = TILTED;
+    (o + e1 * a + e2 * b).to_array()
+}
+
+/// Origin and spanning vectors of the tilted plane.
+pub(super) const TILTED: (DVec3, DVec3, DVec3) = (
+    DVec3::new(0.3, -0.2, 1.0),
+    DVec3::new(2.0, 1.0, 0.5),
+    DVec3::new(-0.4, 1.0, 1.5),
+);
+
+/// A skew quadrilateral in a tilted plane, straight sides with uneven point spacing, 12 × 9.
+pub(super) fn tilted_quadrilateral() -> CurvesInput {
     let corners = [(0.0, 0.0), (1.0, 0.1), (1.2, 0.9), (-0.1, 1.1)];
     let side = |k: usize| -> Vec<[f64; 3]> {
         let (a, b) = (corners[k], corners[(k + 1) % 4]);
         [0.0, 0.2, 0.45, 1.0]
             .iter()
-            .map(|&t| at(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)))
+            .map(|&t| tilted_plane(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)))
             .collect()
     };
     let mut input = CurvesInput::new((0..4).map(side).collect());
     input.samples = [12, 9];
+    input
+}
+
+#[test]
+fn planar_quadrilateral_gives_a_planar_limit() {
+    let input = tilted_quadrilateral();
     let fitted = build(&input, &Settings::default()).unwrap();
+    let (o, e1, e2) = TILTED;
     let n = e1.cross(e2).normalize();
     let worst = limit_error(&fitted, &|p| (p - o).dot(n));
     assert!(worst <= 1e-12, "{worst}");

@@ -106,14 +106,16 @@ fn quadratic_laplacian(offsets: &[DVec2], r: f64) -> Option<Vec<f64>> {
     let scale = (0..5).map(|i| g[i][i]).fold(0.0, f64::max);
     for k in 0..5 {
         let p = (k..5).max_by(|&a, &b| g[a][k].abs().total_cmp(&g[b][k].abs()))?;
-        if !(g[p][k].abs() > 1e-12 * scale) {
+        let pivot = g[p][k].abs();
+        if pivot.is_nan() || pivot <= 1e-12 * scale {
             return None;
         }
         g.swap(k, p);
-        for i in k + 1..5 {
-            let l = g[i][k] / g[k][k];
-            for j in k..6 {
-                g[i][j] -= l * g[k][j];
+        let top = g[k];
+        for row in g.iter_mut().skip(k + 1) {
+            let l = row[k] / top[k];
+            for (x, y) in row[k..].iter_mut().zip(&top[k..]) {
+                *x -= l * y;
             }
         }
     }
@@ -277,7 +279,7 @@ fn cholesky_band(h: &mut [f64], m: usize, band: usize, control: &Control) -> Res
             if j < i {
                 h[i * width + band - (i - j)] = sum / h[j * width + band];
             } else {
-                if !(sum > 1e-13 * scale) {
+                if sum.is_nan() || sum <= 1e-13 * scale {
                     return Err(Error::NumericalFailure(format!(
                         "fair points: the bending energy does not determine free point {i} of \
                          {m} (pivot {sum:e}): free vertices without data around them"

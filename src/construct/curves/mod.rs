@@ -97,7 +97,7 @@ pub enum Method {
     Attraction,
     /// Variational (JSON `"fair"`): the nodes on a curve keep their curve points; the others
     /// minimize the discrete thin-plate energy `∫ |ΔS|²` of the limit surface over the
-    /// projection plane, each node over its Coons-map point ([`crate::fit::fair`]). `tau` is
+    /// projection plane, each node over its Coons-map point (`fit::fair`). `tau` is
     /// not used.
     Fair,
 }
@@ -281,7 +281,7 @@ impl CurvesInput {
     /// vertex is at its blended point; under [`Method::Fair`] the vertices on a curve are
     /// (their blended point is the curve point) and the others minimize the thin-plate
     /// energy of the surface over the projection plane, the vertices placed in the plane by
-    /// the Coons map ([`crate::fit::fair`], started from their blended points).
+    /// the Coons map (`fit::fair`, started from their blended points).
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
         let blend = self.blend(settings)?;
         let grid = self.grid(&blend);

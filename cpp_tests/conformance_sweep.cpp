@@ -6,7 +6,7 @@
 //
 // Models: the checked-in examples (examples/sweeps/*.obj with *.targets.txt: wine glass,
 // torus knot tube, handrail, capped 270-degree cutaways of a wine glass and a vase), the
-// sketch-curve patches (examples/curves: bonnet, three_sided, open_corners) and
+// sketch-curve patches (examples/curves: bonnet, three_sided, open_corners, bonnet_fair) and
 // models built here through the C API (sphere, cylinder, cone, partial and capped
 // revolutions, torus, a square tube along a closed curve, an L-shaped square rail), each read
 // back through the C API and then from the OBJ file it writes, so OpenSubdiv is configured from the
@@ -234,7 +234,7 @@ int main() {
     const std::pair<const std::string *, const char *> examples[] = {
         {&sweep_dir, "wine_glass"}, {&sweep_dir, "torus_knot_tube"}, {&sweep_dir, "handrail"},
         {&sweep_dir, "wine_glass_cutaway"}, {&sweep_dir, "vase_cutaway"}, {&curves_dir, "bonnet"},
-        {&curves_dir, "three_sided"}, {&curves_dir, "open_corners"}};
+        {&curves_dir, "three_sided"}, {&curves_dir, "open_corners"}, {&curves_dir, "bonnet_fair"}};
     for (const auto &[dir, name] : examples) {
         Model m;
         m.name = name;
@@ -309,6 +309,13 @@ int main() {
                          PROFSUBD_ERROR_INVALID_ARGUMENT &&
                      untouched == nullptr,
                  "a folded limit surface is refused");
+        // The same strokes by the fair method: fold-free, its targets checked like the others.
+        profsubd_fitted *fair = nullptr;
+        st = profsubd_curves_fair(pts.data(), sizes.data(), 4, 1, up, raw_options, &fair);
+        Model f;
+        if (take_result(ck, "sketch curves 10x10, fair", st, fair, &f)) {
+            models.push_back(std::move(f));
+        }
     }
     // Partial revolutions: poles on the boundary meridians (sectors with a corner apex), and
     // flat caps (sectors, meridian planes) closing the solid.
@@ -492,6 +499,6 @@ int main() {
         }
     }
     ck.set_context("");
-    ck.equal(models.size(), size_t(27), "every model built");
+    ck.equal(models.size(), size_t(29), "every model built");
     return ck.finish();
 }

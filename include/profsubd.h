@@ -850,6 +850,21 @@ enum profsubd_status profsubd_curves(const double *points,
                                      struct profsubd_fitted **out);
 
 /**
+ * [`profsubd_curves`] with the fair method (`"method": "fair"`): the mesh's vertices on a
+ * curve are curve points, the others minimize the discrete bending energy of the limit
+ * surface instead of following the attraction blend (no `tau`). Same arguments, settings
+ * and errors as `profsubd_curves`, plus `PROFSUBD_ERROR_LIMIT_EXCEEDED` if the energy's
+ * factor is above the options' memory budget.
+ */
+enum profsubd_status profsubd_curves_fair(const double *points,
+                                          const size_t *curve_sizes,
+                                          size_t num_boundary,
+                                          size_t num_interior,
+                                          const double *projection_normal,
+                                          const struct profsubd_options *options,
+                                          struct profsubd_fitted **out);
+
+/**
  * Build an evaluator for `mesh` under `options` (NULL: the mesh's tags, then the defaults).
  * The mesh is copied: it may be freed afterwards. Cost: proportional to the mesh, plus a
  * little more around extraordinary vertices and semi-sharp features; on the threads

@@ -215,13 +215,15 @@ def curves(
     tau: float = 2.0,
     samples: Tuple[int, int] = (16, 16),
     projection: Any = "auto",
+    method: str = "attraction",
     **settings: Any,
 ) -> Model:
     """Patch through unorganized 3-D sketch curves (Qin & Wright): ``boundary`` 3 or 4 curves
     (each (n, 3)) in order around the patch, ``interior`` any number of curves, ``tau`` the
     attraction exponent, ``samples`` quads ``(nu, nv)`` along the first and second boundary
-    curve, ``projection`` ``"auto"`` (best-fit plane) or the plane's normal (3 numbers).
-    Settings: ``interpolation``, ``crease_method`` and ``boundary_interpolation`` (the
+    curve, ``projection`` ``"auto"`` (best-fit plane) or the plane's normal (3 numbers),
+    ``method`` ``"attraction"`` (the paper's blend) or ``"fair"`` (vertices off the curves
+    minimize the bending energy; ``tau`` unused). Settings: ``interpolation``, ``crease_method`` and ``boundary_interpolation`` (the
     boundary rule: ``boundary`` names the curves here) — as ``profsubd curves``' JSON input
     and flags."""
     if "boundary_interpolation" in settings:
@@ -237,9 +239,15 @@ def curves(
     else:
         normal = points([projection], 3, "projection").reshape(3)
     opts = Options(samples=tuple(samples), **settings)
+    normal_ptr = None if normal is None else ptr(normal)
+    if method == "fair":
+        return build(
+            "profsubd_curves_fair", ptr(flat), ptr(sizes), len(boundary), len(interior), normal_ptr, options=opts
+        )
+    if method != "attraction":
+        raise ValueError(f'curves: method must be "attraction" or "fair", got {method!r}')
     return build(
-        "profsubd_curves", ptr(flat), ptr(sizes), len(boundary), len(interior), float(tau),
-        None if normal is None else ptr(normal), options=opts,
+        "profsubd_curves", ptr(flat), ptr(sizes), len(boundary), len(interior), float(tau), normal_ptr, options=opts
     )
 
 

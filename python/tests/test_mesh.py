@@ -52,9 +52,9 @@ def test_obj_read_write_is_byte_exact(tmp_path, name):
     [("profile", None), ("profile", "profiles/vase.json"), ("profile", "profiles/spinning_top.json"),
      ("revolve", "sweeps/vase_cutaway.json"), ("sweep", "sweeps/handrail.json"),
      ("sweep", "sweeps/torus_knot_tube.json"), ("curves", "curves/bonnet.json"),
-     ("curves", "curves/three_sided.json"), ("curves", "curves/open_corners.json"), ("blend", "blends/tee.json"),
-     ("blend", "blends/six_way.json"), ("blend", "blends/three_way_n6.json"),
-     ("blend", "blends/six_way_k3_v1.json")],
+     ("curves", "curves/three_sided.json"), ("curves", "curves/open_corners.json"), ("curves", "curves/bonnet_fair.json"),
+     ("blend", "blends/tee.json"), ("blend", "blends/six_way.json"), ("blend", "blends/three_way_n6.json"),
+     ("blend", "blends/six_way_k3_v1.json"), ("blend", "blends/six_way_k3_cosh.json")],
 )
 def test_constructions_write_the_cli_bytes(tmp_path, cli, kind, example):
     # JSON keys are the keyword arguments: profsubd.KIND(**json) == `profsubd KIND file.json`.

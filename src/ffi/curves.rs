@@ -2,9 +2,9 @@
 //! their counts, τ and the projection as arguments, the other settings on the options
 //! object (`src/ffi/construct.rs`), the result a `profsubd_fitted`.
 
-use crate::construct::curves::{build, CurvesInput, Projection};
+use crate::construct::curves::{build, CurvesInput, Method, Projection};
 use crate::ffi::construct::{construct, tuples};
-use crate::ffi::error::FfiError;
+use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::fitted::profsubd_fitted;
 use crate::ffi::options::profsubd_options;
 use crate::ffi::ptr::arg_slice;
@@ -36,31 +36,86 @@ pub unsafe extern "C" fn profsubd_curves(
     options: *const profsubd_options,
     out: *mut *mut profsubd_fitted,
 ) -> profsubd_status {
+    construct(
+        out,
+        options,
+        || {
+            read_curves(
+                points,
+                curve_sizes,
+                num_boundary,
+                num_interior,
+                tau,
+                projection_normal,
+                Method::Attraction,
+            )
+        },
+        build,
+    )
+}
+
+/// [`profsubd_curves`] with the fair method (`"method": "fair"`): the mesh's vertices on a
+/// curve are curve points, the others minimize the discrete bending energy of the limit
+/// surface instead of following the attraction blend (no `tau`). Same arguments, settings
+/// and errors as `profsubd_curves`, plus `PROFSUBD_ERROR_LIMIT_EXCEEDED` if the energy's
+/// factor is above the options' memory budget.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_curves_fair(
+    points: *const f64,
+    curve_sizes: *const usize,
+    num_boundary: usize,
+    num_interior: usize,
+    projection_normal: *const f64,
+    options: *const profsubd_options,
+    out: *mut *mut profsubd_fitted,
+) -> profsubd_status {
     let read = || {
-        let count = num_boundary
-            .checked_add(num_interior)
-            .ok_or_else(|| FfiError::invalid_argument("curve counts are absurd"))?;
-        let sizes = arg_slice(curve_sizes, count, "curve_sizes")?;
-        let total = sizes
-            .iter()
-            .try_fold(0usize, |a, &n| a.checked_add(n))
-            .ok_or_else(|| FfiError::invalid_argument("curve_sizes: the total is absurd"))?;
-        let all = tuples::<3>(points, total, "points")?;
-        let mut curves = Vec::with_capacity(count);
-        let mut start = 0;
-        for &n in sizes {
-            curves.push(all[start..start + n].to_vec());
-            start += n;
-        }
-        let interior = curves.split_off(num_boundary);
-        let mut input = CurvesInput::new(curves);
-        input.interior = interior;
-        input.tau = tau;
-        if !projection_normal.is_null() {
-            let n = tuples::<3>(projection_normal, 1, "projection_normal")?;
-            input.projection = Projection::Normal(n[0]);
-        }
-        Ok(input)
+        read_curves(
+            points,
+            curve_sizes,
+            num_boundary,
+            num_interior,
+            2.0,
+            projection_normal,
+            Method::Fair,
+        )
     };
     construct(out, options, read, build)
+}
+
+/// The input of [`profsubd_curves`] and [`profsubd_curves_fair`] from the caller's arrays.
+unsafe fn read_curves(
+    points: *const f64,
+    curve_sizes: *const usize,
+    num_boundary: usize,
+    num_interior: usize,
+    tau: f64,
+    projection_normal: *const f64,
+    method: Method,
+) -> FfiResult<CurvesInput> {
+    let count = num_boundary
+        .checked_add(num_interior)
+        .ok_or_else(|| FfiError::invalid_argument("curve counts are absurd"))?;
+    let sizes = arg_slice(curve_sizes, count, "curve_sizes")?;
+    let total = sizes
+        .iter()
+        .try_fold(0usize, |a, &n| a.checked_add(n))
+        .ok_or_else(|| FfiError::invalid_argument("curve_sizes: the total is absurd"))?;
+    let all = tuples::<3>(points, total, "points")?;
+    let mut curves = Vec::with_capacity(count);
+    let mut start = 0;
+    for &n in sizes {
+        curves.push(all[start..start + n].to_vec());
+        start += n;
+    }
+    let interior = curves.split_off(num_boundary);
+    let mut input = CurvesInput::new(curves);
+    input.interior = interior;
+    input.tau = tau;
+    input.method = method;
+    if !projection_normal.is_null() {
+        let n = tuples::<3>(projection_normal, 1, "projection_normal")?;
+        input.projection = Projection::Normal(n[0]);
+    }
+    Ok(input)
 }

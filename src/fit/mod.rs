@@ -22,6 +22,7 @@
 
 pub mod bending;
 pub mod cage;
+pub mod fair;
 
 pub use cage::{fit_cage, FitOptions, FittedCage};
 

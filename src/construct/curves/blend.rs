@@ -59,6 +59,12 @@ impl Blend {
         hits
     }
 
+    /// Whether `(u, v)` lies on a curve's pre-image (some intersection at `d = 0`), so that
+    /// [`Blend::point`] is a curve point there.
+    pub fn on_curve(&self, uv: DVec2) -> bool {
+        self.hits(uv).iter().any(|h| h.0 == 0.0)
+    }
+
     /// The surface point at `(u, v)`: eq. (6) over [`Blend::hits`].
     pub fn point(&self, uv: DVec2) -> DVec3 {
         let hits = self.hits(uv);

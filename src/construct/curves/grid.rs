@@ -6,8 +6,10 @@
 //! nearest inner node of that line is moved along the line to the crossing, where the blend
 //! is exactly the curve point (`d = 0`). Crossings are taken most transversal first; a node
 //! moves once, and only if it stays more than a quarter of a cell from its neighbours along
-//! the line, so the grid keeps its order. The grid's corners are tagged as infinitely sharp
-//! corners.
+//! the line, so the grid keeps its order. Before them, a pre-image's end inside the square
+//! takes the nearest inner node (both coordinates), under the same quarter-cell rule, so a
+//! curve ending inside the patch is interpolated to its end. The grid's corners are tagged
+//! as infinitely sharp corners.
 //!
 //! **3 sides.** The square with its top side collapsed is a triangle `A = (0, 0)`,
 //! `B = (1, 0)`, apex `C` (`v = 1`); it is split from its centroid to its edge midpoints into
@@ -15,8 +17,11 @@
 //! intervals): all quads, one interior valence-3 vertex at the centroid, the triangle's three
 //! corners tagged. A node with barycentric coordinates `(a, b, c)` (weights of `A, B, C`) has
 //! square coordinates `u = b / (a + b)`, `v = c` (the apex any `u`: its point is the
-//! collapsed side's). Interior curves of a 3-sided patch are blended but no node is moved onto
-//! them.
+//! collapsed side's). Interior curves are interpolated here too: an inner node whose lines
+//! `U = u` or `V = v` (rays from the apex, lines parallel to the base) cross a pre-image near
+//! it is moved along that line to the nearest crossing, if the move is shorter than 0.3 of
+//! its shortest edge in the triangle (so no cell turns over); nodes are taken in order, each
+//! once.
 
 use std::collections::HashMap;
 
@@ -60,8 +65,9 @@ impl SquareGrid {
         }
     }
 
-    /// The triangle split into three `k × k` quad grids.
-    pub fn three_sided(k: usize) -> SquareGrid {
+    /// The triangle split into three `k × k` quad grids, nodes moved onto the interior
+    /// pre-images of `blend`.
+    pub fn three_sided(k: usize, blend: &Blend) -> SquareGrid {
         let (a, b, c) = (DVec3::X, DVec3::Y, DVec3::Z);
         let (ab, bc, ca) = ((a + b) * 0.5, (b + c) * 0.5, (c + a) * 0.5);
         let g = (a + b + c) / 3.0;
@@ -106,6 +112,7 @@ impl SquareGrid {
                 }
             }
         }
+        snap_three_sided(&mut uv, &faces, blend);
         SquareGrid { uv, faces, corners }
     }
 
@@ -183,6 +190,39 @@ fn snap(uv: &mut [DVec2], nu: usize, nv: usize, blend: &Blend) {
     });
     let id = |i: usize, j: usize| j * (nu + 1) + i;
     let mut moved = vec![false; uv.len()];
+    // A curve's ends inside the square first: the nearest inner node moves onto the end
+    // (both coordinates), if it keeps a quarter cell from its four neighbours.
+    let (cu, cv) = (1.0 / nu as f64, 1.0 / nv as f64);
+    for c in &blend.interior {
+        for piece in &c.pieces {
+            for end in [piece[0].uv, piece[piece.len() - 1].uv] {
+                let (i, j) = (
+                    (end.x * nu as f64).round() as usize,
+                    (end.y * nv as f64).round() as usize,
+                );
+                if i == 0
+                    || j == 0
+                    || i >= nu
+                    || j >= nv
+                    || end.x <= 0.0
+                    || end.y <= 0.0
+                    || end.x >= 1.0
+                    || end.y >= 1.0
+                {
+                    continue;
+                }
+                let k = id(i, j);
+                let clear = uv[id(i - 1, j)].x + 0.25 * cu < end.x
+                    && end.x < uv[id(i + 1, j)].x - 0.25 * cu
+                    && uv[id(i, j - 1)].y + 0.25 * cv < end.y
+                    && end.y < uv[id(i, j + 1)].y - 0.25 * cv;
+                if !moved[k] && clear {
+                    uv[k] = end;
+                    moved[k] = true;
+                }
+            }
+        }
+    }
     for m in moves {
         let [i, j] = m.node;
         let k = id(i, j);
@@ -199,6 +239,56 @@ fn snap(uv: &mut [DVec2], nu: usize, nv: usize, blend: &Blend) {
         if m.at > uv[before][coord] + margin && m.at < uv[after][coord] - margin {
             uv[k][coord] = m.at;
             moved[k] = true;
+        }
+    }
+}
+
+/// A point of the square in the 3-sided layout's equilateral triangle `A = (0, 0)`,
+/// `B = (1, 0)`, `C = (1/2, √3/2)` (barycentric `a = (1 − u)(1 − v)`, `b = u (1 − v)`, `c = v`).
+fn in_triangle(p: DVec2) -> DVec2 {
+    let (b, c) = (p.x * (1.0 - p.y), p.y);
+    DVec2::new(b + 0.5 * c, c * 0.75f64.sqrt())
+}
+
+/// Move inner nodes of the 3-sided layout onto the interior pre-images (module documentation).
+fn snap_three_sided(uv: &mut [DVec2], faces: &[[u32; 4]], blend: &Blend) {
+    if blend.interior.is_empty() {
+        return;
+    }
+    let mut shortest = vec![f64::INFINITY; uv.len()];
+    for f in faces {
+        for k in 0..4 {
+            let (a, b) = (f[k] as usize, f[(k + 1) % 4] as usize);
+            let d = in_triangle(uv[a]).distance(in_triangle(uv[b]));
+            shortest[a] = shortest[a].min(d);
+            shortest[b] = shortest[b].min(d);
+        }
+    }
+    let mut found = Vec::new();
+    for (node, p) in uv.iter_mut().enumerate() {
+        if blend.on_curve(*p) {
+            continue; // the boundary
+        }
+        let here = in_triangle(*p);
+        let mut best: Option<(f64, DVec2)> = None;
+        for c in &blend.interior {
+            for piece in &c.pieces {
+                for axis in [0, 1] {
+                    found.clear();
+                    crossings(piece, axis, p[axis], &mut found);
+                    for &(at, _, _) in &found {
+                        let mut q = *p;
+                        q[1 - axis] = at;
+                        let d = in_triangle(q).distance(here);
+                        if d < 0.3 * shortest[node] && best.map_or(true, |b| d < b.0) {
+                            best = Some((d, q));
+                        }
+                    }
+                }
+            }
+        }
+        if let Some((_, q)) = best {
+            *p = q;
         }
     }
 }

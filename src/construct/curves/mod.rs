@@ -5,7 +5,7 @@
 //! ```json
 //! { "boundary": [[[x,y,z],...], [[x,y,z],...], [[x,y,z],...], [[x,y,z],...]],
 //!   "interior": [[[x,y,z],...], ...], "tau": 2, "samples": [16, 16],
-//!   "projection": "auto", "interpolation": "spline" }
+//!   "projection": "auto", "method": "attraction", "interpolation": "spline" }
 //! ```
 //! Keys: `boundary` (required: 3 or 4 point lists in order around the patch; each runs on
 //! from the previous one: a curve whose end is nearer the previous curve's end than its start
@@ -14,7 +14,8 @@
 //! clipped), `tau` (τ ≥ 0 of eqs. (5)–(7), default 2), `samples` (`[nu, nv]` quads along the
 //! first and second boundary curve's directions, default `[16, 16]`; a 3-sided patch uses
 //! `k = ⌈max(nu, nv)/2⌉`, see [`grid`]), `projection` (`"auto"`, the default: the best-fit
-//! plane of all curve points; or a normal `[x, y, z]`). The shared [`Settings`] keys apply
+//! plane of all curve points; or a normal `[x, y, z]`), `method` (`"attraction"`, the
+//! default: the paper's blend; `"fair"`: [`Method::Fair`]). The shared [`Settings`] keys apply
 //! (`interpolation`: curves as splines or polylines; `crease_method`: what the mesh is fitted
 //! under; `caps` must stay `"open"`). Here `boundary` is the curves (an array); the boundary
 //! *rule* the mesh is fitted under (default edge-and-corner) then comes from the command
@@ -33,6 +34,8 @@
 //! boundary's order by the right-hand rule.
 
 pub mod blend;
+#[cfg(test)]
+mod fair_tests;
 pub mod grid;
 pub mod preimage;
 pub mod projection;
@@ -49,6 +52,7 @@ use crate::construct::fitted::Fitted;
 use crate::construct::settings::{Caps, Settings, MAX_SAMPLES, MAX_SAMPLE_PRODUCT};
 use crate::curves::SpaceCurve;
 use crate::error::{Error, Result};
+use crate::fit::fair;
 use crate::mesh::MeshParts;
 use blend::Blend;
 use grid::SquareGrid;
@@ -83,6 +87,21 @@ impl<'de> Deserialize<'de> for Projection {
     }
 }
 
+/// How the points of the grid between the curves are found.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// The paper's attraction blend, eqs. (5)–(8), at every node (JSON `"attraction"`). The
+    /// default.
+    #[default]
+    Attraction,
+    /// Variational (JSON `"fair"`): the nodes on a curve keep their curve points; the others
+    /// minimize the discrete thin-plate energy `∫ |ΔS|²` of the limit surface over the
+    /// projection plane, each node over its Coons-map point (`fit::fair`). `tau` is
+    /// not used.
+    Fair,
+}
+
 /// Sketch curves to a surface: see the module documentation for the JSON form and defaults.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -101,6 +120,9 @@ pub struct CurvesInput {
     /// The projection plane. Default auto.
     #[serde(default)]
     pub projection: Projection,
+    /// The attraction blend or the fair variant. Default the blend.
+    #[serde(default)]
+    pub method: Method,
 }
 
 fn default_tau() -> f64 {
@@ -122,6 +144,7 @@ impl CurvesInput {
             tau: default_tau(),
             samples: default_samples(),
             projection: Projection::Auto,
+            method: Method::Attraction,
         }
     }
 
@@ -247,18 +270,22 @@ impl CurvesInput {
     pub fn grid(&self, blend: &Blend) -> SquareGrid {
         let [nu, nv] = self.samples;
         if blend.boundary.three_sided {
-            SquareGrid::three_sided(nu.max(nv).div_ceil(2))
+            SquareGrid::three_sided(nu.max(nv).div_ceil(2), blend)
         } else {
             SquareGrid::four_sided(nu, nv, blend)
         }
     }
 
-    /// The cage (each vertex at its blended point) and the design lattice: the design
-    /// surface is the blend itself, at the bilinear interpolation of a face's corner `(u, v)`.
+    /// The cage and the design lattice: the design surface is the blend itself, at the
+    /// bilinear interpolation of a face's corner `(u, v)`. Under [`Method::Attraction`] each
+    /// vertex is at its blended point; under [`Method::Fair`] the vertices on a curve are
+    /// (their blended point is the curve point) and the others minimize the thin-plate
+    /// energy of the surface over the projection plane, the vertices placed in the plane by
+    /// the Coons map (`fit::fair`, started from their blended points).
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
         let blend = self.blend(settings)?;
         let grid = self.grid(&blend);
-        let parts = grid.parts(&blend);
+        let mut parts = grid.parts(&blend);
         let coords: Vec<DesignCoord> = grid
             .uv
             .iter()
@@ -271,6 +298,16 @@ impl CurvesInput {
             &BlendDesign(&blend),
             &settings.control,
         )?;
+        if self.method == Method::Fair {
+            let fixed: Vec<bool> = grid.uv.iter().map(|&p| blend.on_curve(p)).collect();
+            let plane: Vec<DVec2> = grid
+                .uv
+                .iter()
+                .map(|p| blend.boundary.map(p.x, p.y))
+                .collect();
+            let rows = fair::laplacian_rows(&grid.faces, &plane)?;
+            parts.positions = fair::minimize(&rows, &fixed, &parts.positions, &settings.control)?;
+        }
         Ok((parts, lattice))
     }
 }
@@ -307,9 +344,12 @@ pub fn build(input: &CurvesInput, settings: &Settings) -> Result<Fitted> {
     let [nu, nv] = input.samples;
     Fitted::fit(parts, settings, design)?.refuse_folds(
         &format!(
-            "curves ({} interior, tau = {}, {nu} x {nv} samples)",
+            "curves ({} interior, {}, {nu} x {nv} samples)",
             input.interior.len(),
-            input.tau
+            match input.method {
+                Method::Attraction => format!("tau = {}", input.tau),
+                Method::Fair => "method fair".to_string(),
+            }
         ),
         "fewer samples or another tau give another layout",
         &settings.control,

@@ -464,8 +464,15 @@ pub fn crossings(piece: &[PreVertex], axis: usize, value: f64, out: &mut Vec<(f6
             continue;
         }
         let t = (value - ca) / (cb - ca);
-        let c = a.uv[other] + t * (b.uv[other] - a.uv[other]);
-        let s = a.s + t * (b.s - a.s);
+        // At a vertex, its own coordinates exactly (a + (b − a) need not round to b).
+        let (c, s) = if t == 1.0 {
+            (b.uv[other], b.s)
+        } else {
+            (
+                a.uv[other] + t * (b.uv[other] - a.uv[other]),
+                a.s + t * (b.s - a.s),
+            )
+        };
         out.push((c, s, b.uv - a.uv));
     }
 }

@@ -2,7 +2,12 @@ use super::preimage::crossings;
 use super::*;
 
 /// `n + 1` points from `a` to `b` lifted by `f`.
-fn line(a: [f64; 2], b: [f64; 2], n: usize, f: &dyn Fn(f64, f64) -> f64) -> Vec<[f64; 3]> {
+pub(super) fn line(
+    a: [f64; 2],
+    b: [f64; 2],
+    n: usize,
+    f: &dyn Fn(f64, f64) -> f64,
+) -> Vec<[f64; 3]> {
     (0..=n)
         .map(|i| {
             let t = i as f64 / n as f64;
@@ -12,7 +17,7 @@ fn line(a: [f64; 2], b: [f64; 2], n: usize, f: &dyn Fn(f64, f64) -> f64) -> Vec<
         .collect()
 }
 
-fn square(f: &dyn Fn(f64, f64) -> f64, n: usize) -> CurvesInput {
+pub(super) fn square(f: &dyn Fn(f64, f64) -> f64, n: usize) -> CurvesInput {
     CurvesInput::new(vec![
         line([-1.0, -1.0], [1.0, -1.0], n, f),
         line([1.0, -1.0], [1.0, 1.0], n, f),
@@ -52,7 +57,7 @@ use crate::mesh::validate::check;
 
 /// Largest distance of the limit surface (5 × 5 points per face) from `f`, over the
 /// diagonal, and the fitted result.
-fn limit_error(fitted: &Fitted, f: &dyn Fn(DVec3) -> f64) -> f64 {
+pub(super) fn limit_error(fitted: &Fitted, f: &dyn Fn(DVec3) -> f64) -> f64 {
     let m = &fitted.mesh;
     let ev = Evaluator::new(m, &m.options().resolve()).unwrap();
     let mut worst = 0.0f64;
@@ -67,7 +72,7 @@ fn limit_error(fitted: &Fitted, f: &dyn Fn(DVec3) -> f64) -> f64 {
 
 /// Valid open manifold (see [`assert_manifold`]), no folds, every face's normal along
 /// `normal` (the projection plane's).
-fn assert_valid(fitted: &Fitted, normal: DVec3) {
+pub(super) fn assert_valid(fitted: &Fitted, normal: DVec3) {
     assert_manifold(fitted);
     let report = fitted.surface_report().unwrap();
     assert_eq!(report.folded_faces, 0, "{report:?}");
@@ -83,7 +88,7 @@ fn assert_valid(fitted: &Fitted, normal: DVec3) {
 }
 
 /// Valid open manifold, one boundary loop, consistently oriented, fit within tolerance.
-fn assert_manifold(fitted: &Fitted) {
+pub(super) fn assert_manifold(fitted: &Fitted) {
     let r = check(&fitted.mesh);
     assert!(
         r.is_manifold() && r.is_consistently_oriented() && !r.is_closed(),
@@ -93,26 +98,39 @@ fn assert_manifold(fitted: &Fitted) {
     assert!(fitted.fit.residual <= 1e-10 * fitted.mesh.bounding_box_diagonal());
 }
 
-#[test]
-fn planar_quadrilateral_gives_a_planar_limit() {
-    // A skew quadrilateral in a tilted plane, straight sides with uneven point spacing.
-    let (o, e1, e2) = (
-        DVec3::new(0.3, -0.2, 1.0),
-        DVec3::new(2.0, 1.0, 0.5),
-        DVec3::new(-0.4, 1.0, 1.5),
-    );
-    let at = |a: f64, b: f64| (o + e1 * a + e2 * b).to_array();
+/// The point `o + a e1 + b e2` of the tilted plane of [`tilted_quadrilateral`].
+pub(super) fn tilted_plane(a: f64, b: f64) -> [f64; 3] {
+    let (o, e1, e2) = TILTED;
+    (o + e1 * a + e2 * b).to_array()
+}
+
+/// Origin and spanning vectors of the tilted plane.
+pub(super) const TILTED: (DVec3, DVec3, DVec3) = (
+    DVec3::new(0.3, -0.2, 1.0),
+    DVec3::new(2.0, 1.0, 0.5),
+    DVec3::new(-0.4, 1.0, 1.5),
+);
+
+/// A skew quadrilateral in a tilted plane, straight sides with uneven point spacing, 12 × 9.
+pub(super) fn tilted_quadrilateral() -> CurvesInput {
     let corners = [(0.0, 0.0), (1.0, 0.1), (1.2, 0.9), (-0.1, 1.1)];
     let side = |k: usize| -> Vec<[f64; 3]> {
         let (a, b) = (corners[k], corners[(k + 1) % 4]);
         [0.0, 0.2, 0.45, 1.0]
             .iter()
-            .map(|&t| at(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)))
+            .map(|&t| tilted_plane(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1)))
             .collect()
     };
     let mut input = CurvesInput::new((0..4).map(side).collect());
     input.samples = [12, 9];
+    input
+}
+
+#[test]
+fn planar_quadrilateral_gives_a_planar_limit() {
+    let input = tilted_quadrilateral();
     let fitted = build(&input, &Settings::default()).unwrap();
+    let (o, e1, e2) = TILTED;
     let n = e1.cross(e2).normalize();
     let worst = limit_error(&fitted, &|p| (p - o).dot(n));
     assert!(worst <= 1e-12, "{worst}");
@@ -122,14 +140,14 @@ fn planar_quadrilateral_gives_a_planar_limit() {
 }
 
 /// `z = x² − y²` over [-1, 1]²: boundaries sampled from it.
-fn saddle(n: usize, samples: usize) -> CurvesInput {
+pub(super) fn saddle(n: usize, samples: usize) -> CurvesInput {
     let mut input = square(&|x, y| x * x - y * y, n);
     input.samples = [samples, samples];
     input
 }
 
 /// The cylinder `y² + z² = 1` over x ∈ [-1, 1], angle ∈ [-50°, 50°] from +z.
-fn cylinder(n: usize, samples: usize) -> CurvesInput {
+pub(super) fn cylinder(n: usize, samples: usize) -> CurvesInput {
     let a = 50f64.to_radians();
     let arc = |x: f64, from: f64, to: f64| -> Vec<[f64; 3]> {
         (0..=n)
@@ -158,7 +176,7 @@ fn cylinder(n: usize, samples: usize) -> CurvesInput {
 }
 
 #[test]
-fn saddle_and_cylinder_errors_and_their_trend() {
+pub(super) fn saddle_and_cylinder_errors_and_their_trend() {
     let mut lines = Vec::new();
     for samples in [8, 16, 32] {
         let f = build(&saddle(16, samples), &Settings::default()).unwrap();
@@ -188,7 +206,7 @@ fn bonnet_z(x: f64, y: f64) -> f64 {
 
 /// A bonnet-like patch over [-1.5, 1.5] × [-1, 1] with two raised character lines along x at
 /// y ≈ ±0.5, one inside the boundary, one crossing it.
-fn bonnet(samples: usize) -> CurvesInput {
+pub(super) fn bonnet(samples: usize) -> CurvesInput {
     let mut input = square(&bonnet_z, 12);
     for c in input.boundary.iter_mut() {
         for p in c.iter_mut() {
@@ -212,7 +230,7 @@ fn bonnet(samples: usize) -> CurvesInput {
 
 /// Closest distance from `p` to the limit surface of `faces` of `ev`, by Gauss–Newton from
 /// each face's centre, kept inside the face.
-fn distance_to_surface(ev: &Evaluator, faces: &[u32], p: DVec3) -> f64 {
+pub(super) fn distance_to_surface(ev: &Evaluator, faces: &[u32], p: DVec3) -> f64 {
     let mut best = f64::INFINITY;
     for &f in faces {
         let mut uv = DVec2::splat(0.5);
@@ -375,7 +393,7 @@ fn three_sided_open_corners_crossing_and_inside_curves_give_valid_surfaces() {
 }
 
 /// The fit `build` makes, without its fold guard.
-fn fit_unguarded(input: &CurvesInput) -> Fitted {
+pub(super) fn fit_unguarded(input: &CurvesInput) -> Fitted {
     let settings = Settings::default();
     let (parts, design) = input.cage(&settings).unwrap();
     Fitted::fit(parts, &settings, design).unwrap()

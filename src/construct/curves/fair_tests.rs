@@ -1,0 +1,335 @@
+//! The fair method (`"method": "fair"`) against analytic surfaces and the attraction blend.
+
+use super::tests::{
+    assert_manifold, assert_valid, bonnet, cylinder, distance_to_surface, fit_unguarded,
+    limit_error, line, saddle, tilted_plane, tilted_quadrilateral, TILTED,
+};
+use super::*;
+use crate::eval::Evaluator;
+
+/// How far inside the square interior curves are measured: the part of the bonnet's curves
+/// 2 cells of the coarsest grid (8 × 8) from its boundary, the same at every resolution.
+const MARGIN: f64 = 0.25;
+
+fn fair(mut input: CurvesInput) -> CurvesInput {
+    input.method = Method::Fair;
+    input
+}
+
+/// How far each curve (boundary sides, then interior curves) is from the limit surface,
+/// sampled 4 times per pre-image segment (from `margin` inside the square's boundary) and 64
+/// times per side, over the diagonal; and how
+/// many vertices lie on each interior curve, each with its limit asserted to be its curve
+/// point to 1e-10 × the diagonal.
+struct CurveDistances {
+    max: Vec<f64>,
+    on_interior: Vec<usize>,
+}
+
+fn curve_distances(input: &CurvesInput, fitted: &Fitted, margin: f64) -> CurveDistances {
+    let settings = Settings::default();
+    let blend = input.blend(&settings).unwrap();
+    let grid = input.grid(&blend);
+    let m = &fitted.mesh;
+    let diagonal = m.bounding_box_diagonal();
+    let ev = Evaluator::new(m, &m.options().resolve()).unwrap();
+    // Every vertex on a curve: the limit there is its data point, the curve point.
+    for (v, &uv) in grid.uv.iter().enumerate() {
+        if blend.on_curve(uv) {
+            let f = grid
+                .faces
+                .iter()
+                .position(|q| q.contains(&(v as u32)))
+                .unwrap();
+            let corner = grid.faces[f].iter().position(|&w| w == v as u32).unwrap();
+            let (u, w) = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)][corner];
+            let p = ev.evaluate(f as u32, u, w).unwrap().position;
+            assert!(
+                p.distance(blend.point(uv)) <= 1e-10 * diagonal,
+                "vertex {v}"
+            );
+        }
+    }
+    let cell = 1.0 / input.samples[0].max(input.samples[1]) as f64;
+    // Faces whose square cell (grown by a cell) holds `uv`: where the curve point can be.
+    let near = |uv: DVec2| -> Vec<u32> {
+        (0..grid.faces.len() as u32)
+            .filter(|&f| {
+                let c = grid.faces[f as usize].map(|v| grid.uv[v as usize]);
+                let lo = c.iter().fold(DVec2::INFINITY, |a, b| a.min(*b));
+                let hi = c.iter().fold(DVec2::NEG_INFINITY, |a, b| a.max(*b));
+                uv.cmpge(lo - cell).all() && uv.cmple(hi + cell).all()
+            })
+            .collect()
+    };
+    let mut max = Vec::new();
+    let sides = &blend.boundary.sides;
+    for (k, side) in sides.iter().enumerate() {
+        if matches!(side, preimage::Side::Point(_)) {
+            continue;
+        }
+        let mut worst = 0.0f64;
+        for i in 0..=64 {
+            let t = i as f64 / 64.0;
+            let uv = [
+                DVec2::new(t, 0.0),
+                DVec2::new(1.0, t),
+                DVec2::new(t, 1.0),
+                DVec2::new(0.0, t),
+            ][k];
+            worst = worst.max(distance_to_surface(&ev, &near(uv), side.point(t)));
+        }
+        max.push(worst / diagonal);
+    }
+    let mut on_interior = Vec::new();
+    for curve in &blend.interior {
+        let mut worst = 0.0f64;
+        for piece in &curve.pieces {
+            for w in piece.windows(2) {
+                for k in 0..4 {
+                    let t = k as f64 / 4.0;
+                    let uv = w[0].uv.lerp(w[1].uv, t);
+                    let p = curve.point(w[0].s + t * (w[1].s - w[0].s));
+                    // Where a curve crosses the boundary the boundary curve wins (the
+                    // test curves pass above it): measured `margin` inside.
+                    if uv.min_element() >= margin && uv.max_element() <= 1.0 - margin {
+                        worst = worst.max(distance_to_surface(&ev, &near(uv), p));
+                    }
+                }
+            }
+        }
+        max.push(worst / diagonal);
+        let mut count = 0;
+        for &uv in &grid.uv {
+            let mut found = Vec::new();
+            for piece in &curve.pieces {
+                preimage::crossings(piece, 0, uv.x, &mut found);
+                preimage::crossings(piece, 1, uv.y, &mut found);
+            }
+            if found.iter().any(|h| h.0 == uv.y || h.0 == uv.x) {
+                count += 1;
+            }
+        }
+        on_interior.push(count);
+    }
+    CurveDistances { max, on_interior }
+}
+
+/// Bending energy `∫ κ₁² + κ₂² dA` and the extreme principal curvatures of the limit
+/// surface, from 5 × 5 points per face (second derivatives by central differences of the
+/// evaluator's first derivatives).
+fn curvature(fitted: &Fitted) -> (f64, f64, f64) {
+    let m = &fitted.mesh;
+    let ev = Evaluator::new(m, &m.options().resolve()).unwrap();
+    let h = 1e-5;
+    let (mut energy, mut lo, mut hi) = (0.0, f64::INFINITY, f64::NEG_INFINITY);
+    for f in 0..m.num_faces() as u32 {
+        for k in 0..25 {
+            let (u, v) = (0.1 + 0.2 * (k % 5) as f64, 0.1 + 0.2 * (k / 5) as f64);
+            let s = ev.evaluate(f, u, v).unwrap();
+            let d = |du: f64, dv: f64| ev.evaluate(f, u + du, v + dv).unwrap();
+            let (up, um, vp, vm) = (d(h, 0.0), d(-h, 0.0), d(0.0, h), d(0.0, -h));
+            let suu = (up.du - um.du) / (2.0 * h);
+            let svv = (vp.dv - vm.dv) / (2.0 * h);
+            let suv = (vp.du - vm.du) / (2.0 * h);
+            let n = s.du.cross(s.dv).normalize();
+            let (e, ff, g) = (s.du.dot(s.du), s.du.dot(s.dv), s.dv.dot(s.dv));
+            let (l, mm, nn) = (suu.dot(n), suv.dot(n), svv.dot(n));
+            let det = e * g - ff * ff;
+            let gauss = (l * nn - mm * mm) / det;
+            let mean = (e * nn - 2.0 * ff * mm + g * l) / (2.0 * det);
+            let root = (mean * mean - gauss).max(0.0).sqrt();
+            let (k1, k2) = (mean + root, mean - root);
+            energy += (k1 * k1 + k2 * k2) * det.sqrt() / 25.0;
+            lo = lo.min(k2);
+            hi = hi.max(k1);
+        }
+    }
+    (energy, lo, hi)
+}
+
+#[test]
+fn fair_planar_input_gives_a_planar_limit() {
+    // The tilted quadrilateral with a straight interior stroke in its plane.
+    let mut input = fair(tilted_quadrilateral());
+    input.interior = vec![vec![
+        tilted_plane(0.2, 0.3),
+        tilted_plane(0.5, 0.6),
+        tilted_plane(0.9, 0.7),
+    ]];
+    let (o, e1, e2) = TILTED;
+    let fitted = build(&input, &Settings::default()).unwrap();
+    let n = e1.cross(e2).normalize();
+    let worst = limit_error(&fitted, &|p| (p - o).dot(n));
+    println!("fair planar patch: largest distance from the plane {worst:.3e} x diagonal");
+    assert!(worst <= 1e-12, "{worst}");
+    assert_valid(&fitted, n);
+}
+
+#[test]
+fn fair_saddle_and_cylinder_errors_and_their_trend() {
+    let mut rows = Vec::new();
+    for samples in [8, 16, 32] {
+        let mut row = vec![samples as f64];
+        for input in [saddle(64, samples), fair(saddle(64, samples))] {
+            let f = build(&input, &Settings::default()).unwrap();
+            assert_valid(&f, DVec3::Z);
+            row.push(limit_error(&f, &|p| p.z - (p.x * p.x - p.y * p.y)));
+        }
+        for input in [cylinder(16, samples), fair(cylinder(16, samples))] {
+            let f = build(&input, &Settings::default()).unwrap();
+            assert_valid(&f, -DVec3::Z);
+            row.push(limit_error(&f, &|p| (p.y * p.y + p.z * p.z).sqrt() - 1.0));
+        }
+        rows.push(row);
+    }
+    for r in &rows {
+        println!(
+            "{0}x{0}: saddle attraction {1:.3e} fair {2:.3e}; cylinder attraction {3:.3e} fair {4:.3e} (x diagonal)",
+            r[0], r[1], r[2], r[3], r[4]
+        );
+    }
+    // The saddle is harmonic: the fair points are on it, and the limit between them
+    // converges about quadratically with the samples.
+    assert!(rows[1][2] < rows[0][2] / 3.0 && rows[2][2] < rows[1][2] / 3.0);
+    // The cylinder is not harmonic: neither surface converges to it (README).
+    for r in &rows {
+        assert!(r[3] < 0.1 && r[4] < 0.15, "{r:?}");
+    }
+}
+
+#[test]
+fn fair_curves_lie_on_the_limit_surface_and_it_does_not_fold() {
+    let mut rows = Vec::new();
+    for samples in [8, 16, 32] {
+        let input = fair(bonnet(samples));
+        let f = build(&input, &Settings::default()).unwrap();
+        assert_valid(&f, DVec3::Z);
+        let d = curve_distances(&input, &f, MARGIN);
+        assert!(
+            d.on_interior.iter().all(|&n| 2 * n >= samples),
+            "{:?}",
+            d.on_interior
+        );
+        rows.push((samples, d));
+    }
+    for (s, d) in &rows {
+        println!(
+            "fair bonnet {s}x{s}: vertices on the interior curves {:?}; max distance of each curve from the limit (4 sides, 2 interior) {} x diagonal",
+            d.on_interior, d.max.iter().map(|x| format!("{x:.2e}")).collect::<Vec<_>>().join(" ")
+        );
+    }
+    // The boundary curves: falling with the samples, about as h³.
+    for c in 0..4 {
+        assert!(
+            rows[1].1.max[c] < rows[0].1.max[c] / 4.0 && rows[2].1.max[c] < rows[1].1.max[c] / 4.0,
+            "side {c}"
+        );
+    }
+    // The interior curves (raised 0.04 above the bonnet, ending inside it): within 3e-4 of
+    // the diagonal at every resolution, not falling from 16 to 32 (README).
+    for (_, d) in &rows {
+        assert!(d.max[4] < 3e-4 && d.max[5] < 3e-4, "{:?}", d.max);
+    }
+}
+
+#[test]
+fn fair_interior_curve_on_a_saddle_converges() {
+    // A stroke lying on z = x² − y²: the saddle is the fair surface, so the stroke's
+    // distance from the limit falls with the samples like the saddle's error.
+    let mut rows = Vec::new();
+    for samples in [8, 16, 32] {
+        let mut input = fair(saddle(64, samples));
+        input.interior = vec![line([-0.7, -0.4], [0.8, 0.5], 32, &|x, y| x * x - y * y)];
+        let f = build(&input, &Settings::default()).unwrap();
+        assert_valid(&f, DVec3::Z);
+        let d = curve_distances(&input, &f, 0.0);
+        rows.push((samples, d.max[4], d.on_interior[0]));
+    }
+    for (s, d, n) in &rows {
+        println!("fair saddle {s}x{s} with a stroke on it: {n} vertices on the stroke, its max distance from the limit {d:.2e} x diagonal");
+    }
+    assert!(
+        rows[1].1 < rows[0].1 / 2.0 && rows[2].1 < rows[1].1 / 2.0,
+        "{rows:?}"
+    );
+}
+
+#[test]
+fn fair_and_attraction_compared_on_the_bonnet() {
+    println!("| bonnet | samples | max distance of each curve (4 sides, 2 interior) × diagonal | bending energy ∫κ₁²+κ₂² dA | κ min / max | folded faces |");
+    for (samples, tau) in [(8, 1.5), (16, 2.0)] {
+        for method in [Method::Attraction, Method::Fair] {
+            let mut input = bonnet(samples);
+            input.tau = tau;
+            input.method = method;
+            let f = fit_unguarded(&input);
+            assert_manifold(&f);
+            let folds = f.surface_report().unwrap().folded_faces;
+            let d = curve_distances(&input, &f, MARGIN);
+            let (energy, lo, hi) = curvature(&f);
+            println!(
+                "| {method:?}{} | {samples}x{samples} | {} | {energy:.3} | {lo:.2} / {hi:.2} | {folds} |",
+                if method == Method::Attraction { format!(" τ = {tau}") } else { String::new() },
+                d.max.iter().map(|x| format!("{x:.1e}")).collect::<Vec<_>>().join(" ")
+            );
+            if method == Method::Fair {
+                assert_eq!(folds, 0);
+            }
+        }
+    }
+}
+
+#[test]
+fn three_sided_patches_interpolate_their_interior_curves() {
+    let dome = |x: f64, y: f64| 1.0 - 0.25 * (x * x + y * y);
+    let corner = |k: usize| {
+        let a = (90.0 + 120.0 * k as f64).to_radians();
+        [1.5 * crate::math::cos(a), 1.5 * crate::math::sin(a)]
+    };
+    for method in [Method::Attraction, Method::Fair] {
+        let mut tri = CurvesInput::new(
+            (0..3)
+                .map(|k| line(corner(k), corner((k + 1) % 3), 8, &dome))
+                .collect(),
+        );
+        tri.samples = [12, 12];
+        tri.method = method;
+        tri.interior = vec![line([-0.8, 0.1], [0.7, -0.2], 8, &|x, y| dome(x, y) + 0.05)];
+        let f = fit_unguarded(&tri);
+        assert_manifold(&f);
+        let folds = f.surface_report().unwrap().folded_faces;
+        let d = curve_distances(&tri, &f, 0.0);
+        println!(
+            "3-sided dome with an interior stroke, {method:?}: vertices on it {:?}, max distance of the curves from the limit {:.2e} x diagonal, folded faces {folds}",
+            d.on_interior,
+            d.max.iter().fold(0.0f64, |a, b| a.max(*b))
+        );
+        if method == Method::Fair {
+            assert_valid(&build(&tri, &Settings::default()).unwrap(), DVec3::Z);
+        }
+        assert!(d.on_interior[0] >= 6, "{:?}", d.on_interior);
+    }
+}
+
+#[test]
+fn method_is_read_from_json() {
+    let p = Path::new("in.json");
+    let text = |m: &str| {
+        format!(
+            r#"{{"boundary": [[[0,0,0],[1,0,0]],[[1,0,0],[1,1,0]],[[1,1,0],[0,0,0]]], "method": "{m}"}}"#
+        )
+    };
+    let (i, _) = CurvesInput::from_json(&text("fair"), p).unwrap();
+    assert_eq!(i.method, Method::Fair);
+    let (i, _) = CurvesInput::from_json(&text("attraction"), p).unwrap();
+    assert_eq!(i.method, Method::Attraction);
+    let e = CurvesInput::from_json(&text("smooth"), p).unwrap_err();
+    assert!(e.to_string().contains("unknown variant `smooth`"), "{e}");
+    // Bad curves are refused the same way under either method.
+    let mut bad = fair(saddle(4, 4));
+    bad.boundary[2][1][2] = f64::NAN;
+    assert!(
+        matches!(build(&bad, &Settings::default()), Err(Error::InvalidArgument(m)) if m.contains("not finite"))
+    );
+}

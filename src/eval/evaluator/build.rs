@@ -8,7 +8,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use super::{DeepFragment, Node, CACHE_DEPTH, DEGENERATE_BUDGET, DEGENERATE_DEPTH};
 use crate::control::Control;
 use crate::error::{Error, Result};
-use crate::eval::patch_regular::{regular_patch_points, PatchPoints, NO_POINT};
+use crate::eval::patch_regular::{regular_patch_points, PatchPoints, PatchTest, NO_POINT};
 use crate::eval::patch_topology::{Neighbourhood, Remap};
 use crate::eval::points::PointProgram;
 use crate::mesh::Mesh;
@@ -121,7 +121,7 @@ impl<'a> Builder<'a> {
             let parametric = if size == 4 { 1 } else { size };
             if no_surface[f] {
                 self.roots
-                    .extend(std::iter::repeat_n(Node::NoSurface, parametric));
+                    .resize(self.roots.len() + parametric, Node::NoSurface);
                 continue;
             }
             if any_repeats {
@@ -134,7 +134,7 @@ impl<'a> Builder<'a> {
             }
             let first = self.roots.len() as u32;
             self.roots
-                .extend(std::iter::repeat_n(Node::NoSurface, parametric));
+                .resize(self.roots.len() + parametric, Node::NoSurface);
             if size == 4 {
                 pending.push((Slot::Root(first), f as u32));
             } else {
@@ -161,12 +161,14 @@ impl<'a> Builder<'a> {
         let mut owned: Option<Neighbourhood> = None;
         let mut around = Vec::new();
         let mut remap = Remap::Dense(vec![u32::MAX; global.num_vertices()]);
+        let mut test = PatchTest::new();
         for depth in 0.. {
             let nb = owned.as_ref().unwrap_or(global);
+            test.start(nb.num_vertices());
             let n = pending.len();
             for (i, (slot, f)) in std::mem::take(&mut pending).into_iter().enumerate() {
                 poll(depth + 1, i, n)?;
-                let node = if let Some(p) = regular_patch_points(nb, f, options) {
+                let node = if let Some(p) = test.points(nb, f, options) {
                     self.leaf(p, &points)
                 } else if depth >= CACHE_DEPTH {
                     nb.faces_around(f, &mut around);

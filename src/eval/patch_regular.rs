@@ -402,60 +402,114 @@ pub fn regular_patch_points(
     f: u32,
     options: &SubdivOptions,
 ) -> Option<PatchPoints> {
-    let face = nb.face(f);
-    if face.len() != 4 {
-        return None;
+    PatchTest::new().points(nb, f, options)
+}
+
+/// The patch test's working memory, reused from face to face of one fragment (the stars
+/// are a few kilobytes to clear otherwise), and which vertices are known to be smooth
+/// corners: whether a corner is smooth does not depend on the face it is tested for, and
+/// each vertex is a corner of four faces.
+pub struct PatchTest {
+    stars: [VertexStar; 4],
+    /// Per vertex of the fragment [`PatchTest::start`] was given: true once seen smooth.
+    smooth: Vec<bool>,
+}
+
+impl Default for PatchTest {
+    fn default() -> PatchTest {
+        PatchTest::new()
     }
-    for k in 0..4 {
-        if face[k + 1..].contains(&face[k]) {
+}
+
+impl PatchTest {
+    /// A test that remembers nothing between faces until [`PatchTest::start`].
+    pub fn new() -> PatchTest {
+        PatchTest {
+            stars: std::array::from_fn(|_| VertexStar::new()),
+            smooth: Vec::new(),
+        }
+    }
+
+    /// Start testing the faces of a fragment of `num_vertices` vertices.
+    pub fn start(&mut self, num_vertices: usize) {
+        self.smooth.clear();
+        self.smooth.resize(num_vertices, false);
+    }
+
+    /// [`regular_patch_points`] for a face of the fragment of the last
+    /// [`PatchTest::start`] (or of any fragment if none).
+    pub fn points(
+        &mut self,
+        nb: &Neighbourhood,
+        f: u32,
+        options: &SubdivOptions,
+    ) -> Option<PatchPoints> {
+        let face = nb.face(f);
+        if face.len() != 4 {
             return None;
         }
-    }
-    let mut kinds = [CornerKind::Irregular; 4];
-    let mut stars: [VertexStar; 4] = std::array::from_fn(|_| VertexStar::new());
-    for k in 0..4 {
-        stars[k].fill(nb, face[k])?;
-        kinds[k] = corner_kind_by_counts(nb, f, k, &stars[k], options);
-        // A seemingly regular corner whose faces overlap in more than an edge is irregular.
-        if kinds[k] == CornerKind::Irregular || faces_overlap(nb, face[k]) {
-            return None;
+        for k in 0..4 {
+            if face[k + 1..].contains(&face[k]) {
+                return None;
+            }
         }
-    }
-    let mut boundary: BoundaryMask = 0;
-    let mut pts = [NO_POINT; 16];
-    for k in 0..4 {
-        let (c, d) = (face[k], face[(k + 1) % 4]);
-        let (star_c, star_d) = (&stars[k], &stars[(k + 1) % 4]);
-        pts[CORNER_SLOTS[k]] = c;
-        let sharp = star_c
-            .find(d)
-            .map(|e| is_infinite(edge_sharpness(nb, c, e)))?;
-        if sharp {
-            boundary |= 1 << k;
-            continue;
+        let mut kinds = [CornerKind::Irregular; 4];
+        let stars = &mut self.stars;
+        for k in 0..4 {
+            let c = face[k];
+            stars[k].fill(nb, c)?;
+            if self.smooth.get(c as usize) == Some(&true) {
+                kinds[k] = CornerKind::Smooth;
+                continue;
+            }
+            kinds[k] = corner_kind_by_counts(nb, f, k, &stars[k], options);
+            // A seemingly regular corner whose faces overlap in more than an edge is irregular.
+            if kinds[k] == CornerKind::Irregular || faces_overlap(nb, c) {
+                return None;
+            }
+            if kinds[k] == CornerKind::Smooth {
+                if let Some(known) = self.smooth.get_mut(c as usize) {
+                    *known = true;
+                }
+            }
         }
-        let (_, at_c) = across(nb, star_c, f, c, d)?;
-        let (_, at_d) = across(nb, star_d, f, d, c)?;
-        pts[ACROSS_SLOTS[k].0] = at_c;
-        pts[ACROSS_SLOTS[k].1] = at_d;
-    }
-    for k in 0..4 {
-        if kinds[k] != CornerKind::Smooth {
-            continue;
+        let stars = &self.stars;
+        let mut boundary: BoundaryMask = 0;
+        let mut pts = [NO_POINT; 16];
+        for k in 0..4 {
+            let (c, d) = (face[k], face[(k + 1) % 4]);
+            let (star_c, star_d) = (&stars[k], &stars[(k + 1) % 4]);
+            pts[CORNER_SLOTS[k]] = c;
+            let sharp = star_c
+                .find(d)
+                .map(|e| is_infinite(edge_sharpness(nb, c, e)))?;
+            if sharp {
+                boundary |= 1 << k;
+                continue;
+            }
+            let (_, at_c) = across(nb, star_c, f, c, d)?;
+            let (_, at_d) = across(nb, star_d, f, d, c)?;
+            pts[ACROSS_SLOTS[k].0] = at_c;
+            pts[ACROSS_SLOTS[k].1] = at_d;
         }
-        let (c, star) = (face[k], &stars[k]);
-        let (g_next, _) = across(nb, star, f, c, face[(k + 1) % 4])?;
-        let (g_prev, _) = across(nb, star, f, c, face[(k + 3) % 4])?;
-        let g = *nb
-            .vertex_faces(c)
-            .iter()
-            .find(|&&g| g != f && g != g_next && g != g_prev)?;
-        let gf = nb.face(g);
-        let i = gf.iter().position(|&x| x == c)?;
-        pts[DIAGONAL_SLOTS[k]] = gf[(i + 2) % 4];
+        for k in 0..4 {
+            if kinds[k] != CornerKind::Smooth {
+                continue;
+            }
+            let (c, star) = (face[k], &stars[k]);
+            let (g_next, _) = across(nb, star, f, c, face[(k + 1) % 4])?;
+            let (g_prev, _) = across(nb, star, f, c, face[(k + 3) % 4])?;
+            let g = *nb
+                .vertex_faces(c)
+                .iter()
+                .find(|&&g| g != f && g != g_next && g != g_prev)?;
+            let gf = nb.face(g);
+            let i = gf.iter().position(|&x| x == c)?;
+            pts[DIAGONAL_SLOTS[k]] = gf[(i + 2) % 4];
+        }
+        Some(PatchPoints {
+            vertices: pts,
+            boundary,
+        })
     }
-    Some(PatchPoints {
-        vertices: pts,
-        boundary,
-    })
 }

@@ -31,6 +31,34 @@ use crate::topology::{Level, Tags};
 /// fragment) it uses a hash map rather than fill such a table for every face.
 const DENSE_REMAP_LIMIT: usize = 4096;
 
+/// How [`Neighbourhood::cut`] renumbers the vertices of the fragment it cuts from: a table as
+/// long as that fragment (all `u32::MAX` outside a cut), or a hash map for one cut from a
+/// large fragment.
+pub enum Remap {
+    /// One entry per vertex.
+    Dense(Vec<u32>),
+    /// The vertices seen so far.
+    Sparse(HashMap<u32, u32>),
+}
+
+impl Remap {
+    fn get(&self, v: u32) -> u32 {
+        match self {
+            Remap::Dense(t) => t[v as usize],
+            Remap::Sparse(m) => m.get(&v).copied().unwrap_or(u32::MAX),
+        }
+    }
+
+    fn set(&mut self, v: u32, local: u32) {
+        match self {
+            Remap::Dense(t) => t[v as usize] = local,
+            Remap::Sparse(m) => {
+                m.insert(v, local);
+            }
+        }
+    }
+}
+
 /// The topology of a mesh fragment with the adjacency the evaluator's patch tests need.
 /// Vertex data (positions, or the evaluator's point numbers) travel beside it, one value
 /// per vertex, mapped through [`Neighbourhood::around_face`]'s vertex list.
@@ -44,6 +72,10 @@ pub struct Neighbourhood {
     /// key; absent = 0. A sorted list, not a hash map: fragments hold a handful of tags and
     /// are built by the hundred thousand.
     edge_tags: Vec<((u32, u32), f32)>,
+    /// The tags of edges whose smaller vertex is `v` are `edge_tags[tag_starts[v]..
+    /// tag_starts[v + 1]]` (empty without tags): the patch test looks tags up millions of
+    /// times.
+    tag_starts: Vec<u32>,
     /// Corner tags, one per vertex (0 = none).
     vertex_tags: Vec<f32>,
     /// Vertices that descend from an edge point of a refinement: Far gives an edge's child
@@ -209,12 +241,23 @@ impl Neighbourhood {
                 *slot += 1;
             }
         }
+        let mut tag_starts = Vec::new();
+        if !edge_tags.is_empty() {
+            tag_starts = vec![0u32; nv + 1];
+            for &((a, _), _) in &edge_tags {
+                tag_starts[a as usize + 1] += 1;
+            }
+            for i in 0..nv {
+                tag_starts[i + 1] += tag_starts[i];
+            }
+        }
         Neighbourhood {
             face_offsets,
             face_indices,
             vf_offsets,
             vf_faces,
             edge_tags,
+            tag_starts,
             vertex_tags,
             edge_descendants,
             chaikin: false,
@@ -239,6 +282,13 @@ impl Neighbourhood {
             [self.face_offsets[f as usize] as usize..self.face_offsets[f as usize + 1] as usize]
     }
 
+    /// Where face `f`'s vertices start in the list of all faces' vertices: the index of its
+    /// first child face after refinement (children follow their parent's corners).
+    #[inline]
+    pub fn face_offset(&self, f: u32) -> u32 {
+        self.face_offsets[f as usize]
+    }
+
     /// Faces incident to vertex `v` (a face repeating `v` appears once per occurrence).
     #[inline]
     pub fn vertex_faces(&self, v: u32) -> &[u32] {
@@ -252,11 +302,13 @@ impl Neighbourhood {
         if self.edge_tags.is_empty() {
             return 0.0;
         }
-        let key = (a.min(b), a.max(b));
-        match self.edge_tags.binary_search_by_key(&key, |&(k, _)| k) {
-            Ok(i) => self.edge_tags[i].1,
-            Err(_) => 0.0,
-        }
+        let (lo, hi) = (a.min(b), a.max(b));
+        let from = self.tag_starts[lo as usize] as usize;
+        let to = self.tag_starts[lo as usize + 1] as usize;
+        self.edge_tags[from..to]
+            .iter()
+            .find(|&&((_, x), _)| x == hi)
+            .map_or(0.0, |&(_, s)| s)
     }
 
     /// The corner tag of vertex `v` (0 when untagged).
@@ -271,23 +323,29 @@ impl Neighbourhood {
         self.edge_descendants[v as usize]
     }
 
-    /// True when some face lists a vertex twice (degenerate faces of non-manifold inputs).
-    pub fn has_face_repeating_a_vertex(&self) -> bool {
-        (0..self.num_faces() as u32).any(|f| {
-            let face = self.face(f);
-            (0..face.len()).any(|i| face[i + 1..].contains(&face[i]))
-        })
-    }
-
     /// The faces sharing a vertex with face `f` (under Chaikin creasing also those around the
     /// far ends of semi-sharp edges at `f`'s corners), as a new fragment whose face 0 is `f`
     /// and whose vertices 0..n are `f`'s vertices in order, with the vertex of `self` each
     /// of its vertices is.
     pub fn around_face(&self, f: u32) -> (Neighbourhood, Vec<u32>) {
-        let mut faces: Vec<u32> = vec![f];
+        let mut faces = Vec::new();
+        self.faces_around(f, &mut faces);
+        let mut remap = if self.num_vertices() <= DENSE_REMAP_LIMIT {
+            Remap::Dense(vec![u32::MAX; self.num_vertices()])
+        } else {
+            Remap::Sparse(HashMap::new())
+        };
+        self.cut(&faces, &mut remap)
+    }
+
+    /// Replace `faces` with `f` and the faces [`Neighbourhood::around_face`] cuts out with
+    /// it, `f` first.
+    pub fn faces_around(&self, f: u32, faces: &mut Vec<u32>) {
+        faces.clear();
+        faces.push(f);
         let corners = self.face(f);
         for &v in corners {
-            self.add_faces_around(v, &mut faces);
+            self.add_faces_around(v, faces);
         }
         if self.chaikin && !self.edge_tags.is_empty() {
             for &c in corners {
@@ -300,40 +358,33 @@ impl Neighbourhood {
                         }
                         for r in [face[(i + 1) % n], face[(i + n - 1) % n]] {
                             if !corners.contains(&r) && is_semi_sharp(self.edge_tag(c, r)) {
-                                self.add_faces_around(r, &mut faces);
+                                self.add_faces_around(r, faces);
                             }
                         }
                     }
                 }
             }
         }
-        // Local index of each vertex of `self` (u32::MAX: not yet in the fragment), in a table
-        // when `self` is a small fragment, else in a hash map.
-        let dense = self.num_vertices() <= DENSE_REMAP_LIMIT;
-        let mut remap = vec![u32::MAX; if dense { self.num_vertices() } else { 0 }];
-        let mut sparse: HashMap<u32, u32> = HashMap::new();
+    }
+
+    /// Faces `faces` of `self` as a new fragment, in that order, with the vertex of `self`
+    /// each of its vertices is (numbered in order of first use). `remap` maps vertices of
+    /// `self` to the fragment's while cutting; a dense one is all `u32::MAX` before and after.
+    pub fn cut(&self, faces: &[u32], remap: &mut Remap) -> (Neighbourhood, Vec<u32>) {
         let mut globals: Vec<u32> = Vec::with_capacity(faces.len() * 2 + 4);
         let mut vertex_tags = Vec::with_capacity(faces.len() * 2 + 4);
         let mut edge_descendants = Vec::with_capacity(faces.len() * 2 + 4);
         let mut face_offsets = Vec::with_capacity(faces.len() + 1);
         let mut face_indices = Vec::with_capacity(faces.len() * 4);
         face_offsets.push(0u32);
-        for &g in &faces {
+        for &g in faces {
             for &v in self.face(g) {
-                let known = if dense {
-                    remap[v as usize]
-                } else {
-                    sparse.get(&v).copied().unwrap_or(u32::MAX)
-                };
+                let known = remap.get(v);
                 let local = if known != u32::MAX {
                     known
                 } else {
                     let local = globals.len() as u32;
-                    if dense {
-                        remap[v as usize] = local;
-                    } else {
-                        sparse.insert(v, local);
-                    }
+                    remap.set(v, local);
                     globals.push(v);
                     vertex_tags.push(self.vertex_tags[v as usize]);
                     edge_descendants.push(self.edge_descendants[v as usize]);
@@ -342,6 +393,11 @@ impl Neighbourhood {
                 face_indices.push(local);
             }
             face_offsets.push(face_indices.len() as u32);
+        }
+        if let Remap::Dense(table) = remap {
+            for &v in &globals {
+                table[v as usize] = u32::MAX;
+            }
         }
         let mut edge_tags = Vec::new();
         if !self.edge_tags.is_empty() {

@@ -30,21 +30,57 @@ pub(crate) struct PointProgram {
 /// which edge and vertex points read) rather than a parent vertex.
 const CHILD: u32 = 1 << 31;
 
+/// Terms a [`Recorded`] holds in place; more (vertices of valence above 5) spill to the heap.
+const INLINE_TERMS: usize = 12;
+
 /// A refined vertex as the weighted sum interpolation built: its terms over parent vertices
-/// and (with [`CHILD`]) earlier child vertices, in the order they were added.
-#[derive(Debug, Clone, Default)]
+/// and (with [`CHILD`]) earlier child vertices, in the order they were added. Held in place
+/// rather than in a `Vec` each: a build records millions of them.
+#[derive(Debug, Clone)]
 struct Recorded {
     /// This vertex: its parent index, or [`CHILD`] | its child index once complete.
     own: u32,
-    terms: Vec<(u32, f64)>,
+    len: u32,
+    sources: [u32; INLINE_TERMS],
+    weights: [f64; INLINE_TERMS],
+    /// Terms past [`INLINE_TERMS`].
+    spill: Vec<(u32, f64)>,
+}
+
+impl Recorded {
+    fn vertex(own: u32) -> Recorded {
+        Recorded {
+            own,
+            len: 0,
+            sources: [0; INLINE_TERMS],
+            weights: [0.0; INLINE_TERMS],
+            spill: Vec::new(),
+        }
+    }
+
+    fn terms(&self) -> impl Iterator<Item = (u32, f64)> + '_ {
+        let n = (self.len as usize).min(INLINE_TERMS);
+        self.sources[..n]
+            .iter()
+            .copied()
+            .zip(self.weights[..n].iter().copied())
+            .chain(self.spill.iter().copied())
+    }
 }
 
 impl Primvar for Recorded {
     fn zero() -> Self {
-        Recorded::default()
+        Recorded::vertex(0)
     }
     fn add_weighted(&mut self, src: &Self, weight: f64) {
-        self.terms.push((src.own, weight));
+        let k = self.len as usize;
+        if k < INLINE_TERMS {
+            self.sources[k] = src.own;
+            self.weights[k] = weight;
+        } else {
+            self.spill.push((src.own, weight));
+        }
+        self.len += 1;
     }
     fn finish(&mut self, child: u32) {
         self.own = CHILD | child;
@@ -82,10 +118,7 @@ impl PointProgram {
     /// completes them in, so that every term reads an earlier point.
     pub fn record(&mut self, level: &Level, r: &Refinement, parent: &[u32]) -> Vec<u32> {
         let src: Vec<Recorded> = (0..level.num_vertices() as u32)
-            .map(|v| Recorded {
-                own: v,
-                terms: Vec::new(),
-            })
+            .map(Recorded::vertex)
             .collect();
         let dst = interpolate(level, r, &src);
         let mut points = vec![0u32; dst.len()];
@@ -96,7 +129,7 @@ impl PointProgram {
         let first_vertex = r.vertex_child_vertex(0) as usize;
         let vertices = first_vertex..first_vertex + level.num_vertices();
         for cv in faces.chain(edges).chain(vertices) {
-            let terms = dst[cv].terms.iter().map(|&(s, w)| {
+            let terms = dst[cv].terms().map(|(s, w)| {
                 let p = if s & CHILD != 0 {
                     points[(s & !CHILD) as usize]
                 } else {

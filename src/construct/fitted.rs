@@ -99,6 +99,12 @@ impl Fitted {
         self.design.report(&self.mesh)
     }
 
+    /// [`Fitted::surface_report`] polling `control` while it is computed (a construction's
+    /// own fold checks: cancellable like the rest of the call).
+    pub(crate) fn surface_report_with(&self, control: &Control) -> Result<&SurfaceReport> {
+        self.design.report_with(&self.mesh, control)
+    }
+
     /// `self` if its limit surface does not fold ([`Fitted::surface_report`]); otherwise an
     /// [`Error::InvalidArgument`] naming `what`, the folded face count, the folded faces and
     /// where the worst reversal lies, then `hint` (what to change): a construction whose
@@ -106,7 +112,7 @@ impl Fitted {
     /// folded surface. Errors: those of the evaluation.
     /// `control` is polled while the report is computed ([`DesignLattice::report_with`]).
     pub(crate) fn refuse_folds(self, what: &str, hint: &str, control: &Control) -> Result<Fitted> {
-        let folded = self.design.report_with(&self.mesh, control)?.folded_faces;
+        let folded = self.surface_report_with(control)?.folded_faces;
         if folded == 0 {
             return Ok(self);
         }

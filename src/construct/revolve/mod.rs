@@ -324,7 +324,8 @@ pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
         })
         .collect();
     let first = Fitted::fit_free(parts.clone(), settings, design.clone(), &interpolating)?;
-    let fitted = if first.surface_report()?.folded_faces == 0 || interpolating == roles {
+    let folded = first.surface_report_with(&settings.control)?.folded_faces;
+    let fitted = if folded == 0 || interpolating == roles {
         first
     } else {
         Fitted::fit_free(parts, settings, design, &roles)?

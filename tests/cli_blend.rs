@@ -61,8 +61,9 @@ fn bad_input_writes_nothing() {
         (
             r#"{"pipes": [{"end": [2,0,0], "axis": [1,0,0], "radius": 1, "length": 4},
                        {"end": [-2,0,0], "axis": [-1,0,0], "radius": 1, "length": 4},
-                       {"end": [0,2,0], "axis": [0,1,0], "radius": 1, "length": 4}], "order": 5}"#,
-            "even orders",
+                       {"end": [0,2,0], "axis": [0,1,0], "radius": 1, "length": 4}], "order": 5,
+                "gbs_level": 3}"#,
+            "gbs_level 3 is outside 1..=2 for order 5",
         ),
         (r#"{"pipes": [], "colour": 1}"#, "colour"),
     ];

@@ -71,5 +71,5 @@ fn examples_are_written_byte_for_byte_as_committed() {
         }
     }
     // 4 profiles, 5 sweeps, 3 sketch-curve patches and 10 blends, two files each.
-    assert_eq!(checked, 44);
+    assert_eq!(checked, 46);
 }

@@ -1,8 +1,9 @@
 //! The fair method (`"method": "fair"`) against analytic surfaces and the attraction blend.
 
 use super::tests::{
-    assert_manifold, assert_valid, bonnet, cylinder, distance_to_surface, fit_unguarded,
-    limit_error, line, saddle, tilted_plane, tilted_quadrilateral, TILTED,
+    assert_manifold, assert_valid, bonnet, cylinder, dense_samples, distance_to_surface, dome,
+    dome_triangle, fit_unguarded, limit_at_grid_vertex, limit_error, line, saddle, tilted_plane,
+    tilted_quadrilateral, TILTED,
 };
 use super::*;
 use crate::eval::Evaluator;
@@ -36,14 +37,7 @@ fn curve_distances(input: &CurvesInput, fitted: &Fitted, margin: f64) -> CurveDi
     // Every vertex on a curve: the limit there is its data point, the curve point.
     for (v, &uv) in grid.uv.iter().enumerate() {
         if blend.on_curve(uv) {
-            let f = grid
-                .faces
-                .iter()
-                .position(|q| q.contains(&(v as u32)))
-                .unwrap();
-            let corner = grid.faces[f].iter().position(|&w| w == v as u32).unwrap();
-            let (u, w) = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)][corner];
-            let p = ev.evaluate(f as u32, u, w).unwrap().position;
+            let p = limit_at_grid_vertex(&ev, &grid.faces, v);
             assert!(
                 p.distance(blend.point(uv)) <= 1e-10 * diagonal,
                 "vertex {v}"
@@ -84,18 +78,11 @@ fn curve_distances(input: &CurvesInput, fitted: &Fitted, margin: f64) -> CurveDi
     let mut on_interior = Vec::new();
     for curve in &blend.interior {
         let mut worst = 0.0f64;
-        for piece in &curve.pieces {
-            for w in piece.windows(2) {
-                for k in 0..4 {
-                    let t = k as f64 / 4.0;
-                    let uv = w[0].uv.lerp(w[1].uv, t);
-                    let p = curve.point(w[0].s + t * (w[1].s - w[0].s));
-                    // Where a curve crosses the boundary the boundary curve wins (the
-                    // test curves pass above it): measured `margin` inside.
-                    if uv.min_element() >= margin && uv.max_element() <= 1.0 - margin {
-                        worst = worst.max(distance_to_surface(&ev, &near(uv), p));
-                    }
-                }
+        for (uv, p) in dense_samples(curve) {
+            // Where a curve crosses the boundary the boundary curve wins (the test curves
+            // pass above it): measured `margin` inside.
+            if uv.min_element() >= margin && uv.max_element() <= 1.0 - margin {
+                worst = worst.max(distance_to_surface(&ev, &near(uv), p));
             }
         }
         max.push(worst / diagonal);
@@ -282,17 +269,8 @@ fn fair_and_attraction_compared_on_the_bonnet() {
 
 #[test]
 fn three_sided_patches_interpolate_their_interior_curves() {
-    let dome = |x: f64, y: f64| 1.0 - 0.25 * (x * x + y * y);
-    let corner = |k: usize| {
-        let a = (90.0 + 120.0 * k as f64).to_radians();
-        [1.5 * crate::math::cos(a), 1.5 * crate::math::sin(a)]
-    };
     for method in [Method::Attraction, Method::Fair] {
-        let mut tri = CurvesInput::new(
-            (0..3)
-                .map(|k| line(corner(k), corner((k + 1) % 3), 8, &dome))
-                .collect(),
-        );
+        let mut tri = dome_triangle();
         tri.samples = [12, 12];
         tri.method = method;
         tri.interior = vec![line([-0.8, 0.1], [0.7, -0.2], 8, &|x, y| dome(x, y) + 0.05)];

@@ -230,6 +230,14 @@ pub(super) fn bonnet(samples: usize) -> CurvesInput {
 
 /// Closest distance from `p` to the limit surface of `faces` of `ev`, by Gauss–Newton from
 /// each face's centre, kept inside the face.
+/// The limit surface at grid vertex `v`: a corner of the first face holding it.
+pub(super) fn limit_at_grid_vertex(ev: &Evaluator, faces: &[[u32; 4]], v: usize) -> DVec3 {
+    let f = faces.iter().position(|q| q.contains(&(v as u32))).unwrap();
+    let corner = faces[f].iter().position(|&w| w == v as u32).unwrap();
+    let (u, w) = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)][corner];
+    ev.evaluate(f as u32, u, w).unwrap().position
+}
+
 pub(super) fn distance_to_surface(ev: &Evaluator, faces: &[u32], p: DVec3) -> f64 {
     let mut best = f64::INFINITY;
     for &f in faces {
@@ -279,14 +287,7 @@ fn interior_curves_lie_on_the_limit_surface() {
                     if let Some(&(_, s, _)) = found.iter().find(|h| h.0 == uv.y || h.0 == uv.x) {
                         on_curve[c] += 1;
                         assert!(fitted.targets[v].distance(curve.point(s)) <= 1e-15 * diagonal);
-                        let f = grid
-                            .faces
-                            .iter()
-                            .position(|q| q.contains(&(v as u32)))
-                            .unwrap();
-                        let corner = grid.faces[f].iter().position(|&w| w == v as u32).unwrap();
-                        let (u, w) = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)][corner];
-                        let p = ev.evaluate(f as u32, u, w).unwrap().position;
+                        let p = limit_at_grid_vertex(&ev, &grid.faces, v);
                         assert!(p.distance(curve.point(s)) <= 1e-10 * diagonal);
                     }
                 }
@@ -297,24 +298,17 @@ fn interior_curves_lie_on_the_limit_surface() {
         // Between the interpolated points: dense samples of each curve's pre-image.
         let mut worst = 0.0f64;
         for curve in &blend.interior {
-            for piece in &curve.pieces {
-                for w in piece.windows(2) {
-                    for k in 0..4 {
-                        let t = k as f64 / 4.0;
-                        let uv = w[0].uv.lerp(w[1].uv, t);
-                        let p = curve.point(w[0].s + t * (w[1].s - w[0].s));
-                        let near: Vec<u32> = (0..grid.faces.len() as u32)
-                            .filter(|&f| {
-                                let c = grid.faces[f as usize].map(|v| grid.uv[v as usize]);
-                                let lo = c.iter().fold(DVec2::INFINITY, |a, b| a.min(*b));
-                                let hi = c.iter().fold(DVec2::NEG_INFINITY, |a, b| a.max(*b));
-                                uv.cmpge(lo - 0.5 / samples as f64).all()
-                                    && uv.cmple(hi + 0.5 / samples as f64).all()
-                            })
-                            .collect();
-                        worst = worst.max(distance_to_surface(&ev, &near, p));
-                    }
-                }
+            for (uv, p) in dense_samples(curve) {
+                let near: Vec<u32> = (0..grid.faces.len() as u32)
+                    .filter(|&f| {
+                        let c = grid.faces[f as usize].map(|v| grid.uv[v as usize]);
+                        let lo = c.iter().fold(DVec2::INFINITY, |a, b| a.min(*b));
+                        let hi = c.iter().fold(DVec2::NEG_INFINITY, |a, b| a.max(*b));
+                        uv.cmpge(lo - 0.5 / samples as f64).all()
+                            && uv.cmple(hi + 0.5 / samples as f64).all()
+                    })
+                    .collect();
+                worst = worst.max(distance_to_surface(&ev, &near, p));
             }
         }
         rates.push((samples, worst / diagonal, on_curve, folds));
@@ -325,20 +319,44 @@ fn interior_curves_lie_on_the_limit_surface() {
     assert!(rates[2].1 < rates[0].1);
 }
 
-#[test]
-fn three_sided_open_corners_crossing_and_inside_curves_give_valid_surfaces() {
-    let dome = |x: f64, y: f64| 1.0 - 0.25 * (x * x + y * y);
+/// Four points per piece segment of an interior curve: (pre-image, curve point).
+pub(super) fn dense_samples(curve: &Interior) -> Vec<(DVec2, DVec3)> {
+    let mut out = Vec::new();
+    for piece in &curve.pieces {
+        for w in piece.windows(2) {
+            for k in 0..4 {
+                let t = k as f64 / 4.0;
+                let uv = w[0].uv.lerp(w[1].uv, t);
+                out.push((uv, curve.point(w[0].s + t * (w[1].s - w[0].s))));
+            }
+        }
+    }
+    out
+}
+
+/// A dome z = 1 − (x² + y²)/4 over the triangle of circumradius 1.5 with a corner on +y.
+pub(super) fn dome(x: f64, y: f64) -> f64 {
+    1.0 - 0.25 * (x * x + y * y)
+}
+
+/// Three straight sides of [`dome`]'s triangle, 8 points each, as a 3-sided input.
+pub(super) fn dome_triangle() -> CurvesInput {
     let corner = |k: usize| {
         let a = (90.0 + 120.0 * k as f64).to_radians();
         [1.5 * crate::math::cos(a), 1.5 * crate::math::sin(a)]
     };
+    CurvesInput::new(
+        (0..3)
+            .map(|k| line(corner(k), corner((k + 1) % 3), 8, &dome))
+            .collect(),
+    )
+}
+
+#[test]
+fn three_sided_open_corners_crossing_and_inside_curves_give_valid_surfaces() {
     let tri = CurvesInput {
         samples: [10, 10],
-        ..CurvesInput::new(
-            (0..3)
-                .map(|k| line(corner(k), corner((k + 1) % 3), 8, &dome))
-                .collect(),
-        )
+        ..dome_triangle()
     };
     let f = build(&tri, &Settings::default()).unwrap();
     assert_valid(&f, DVec3::Z);

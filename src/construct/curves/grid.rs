@@ -29,6 +29,8 @@ use glam::{DVec2, DVec3};
 
 use super::blend::Blend;
 use super::preimage::crossings;
+use crate::control::Control;
+use crate::error::Result;
 use crate::mesh::{Corner, MeshParts, SHARPNESS_INFINITE};
 use crate::options::PartialOptions;
 
@@ -117,9 +119,18 @@ impl SquareGrid {
     }
 
     /// Mesh parts with every vertex at its blended point, corners tagged infinitely sharp.
-    pub fn parts(&self, blend: &Blend) -> MeshParts {
-        MeshParts {
-            positions: self.uv.iter().map(|&p| blend.point(p)).collect(),
+    /// `control` is polled once per vertex at fraction 0 (the blend precedes the fit).
+    /// Errors: [`crate::Error::Cancelled`] from `control`.
+    pub fn parts(&self, blend: &Blend, control: &Control) -> Result<MeshParts> {
+        let poll = control.stage(0.0, 0.0);
+        let n = self.uv.len();
+        let mut positions = Vec::with_capacity(n);
+        for (i, &p) in self.uv.iter().enumerate() {
+            poll.step(i, n)?;
+            positions.push(blend.point(p));
+        }
+        Ok(MeshParts {
+            positions,
             face_sizes: vec![4; self.faces.len()],
             face_indices: self.faces.iter().flatten().copied().collect(),
             creases: Vec::new(),
@@ -133,7 +144,7 @@ impl SquareGrid {
                 .collect(),
             holes: Vec::new(),
             options: PartialOptions::default(),
-        }
+        })
     }
 }
 

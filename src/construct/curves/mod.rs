@@ -285,7 +285,7 @@ impl CurvesInput {
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
         let blend = self.blend(settings)?;
         let grid = self.grid(&blend);
-        let mut parts = grid.parts(&blend);
+        let mut parts = grid.parts(&blend, &settings.control)?;
         let coords: Vec<DesignCoord> = grid
             .uv
             .iter()

@@ -8,8 +8,6 @@ use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use profsubd::eval::{limit_stencils, Evaluator};
 use profsubd::refine::refine_uniform;
 use profsubd::SubdivOptions;
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 
 mod support;
 
@@ -30,12 +28,7 @@ fn benches(c: &mut Criterion) {
         b.iter(|| ev.set_positions(&moved).unwrap())
     });
     let n = 10_000;
-    let mut rng = ChaCha8Rng::seed_from_u64(7);
-    let faces: Vec<u32> = (0..n)
-        .map(|_| rng.random_range(0..ev.num_parametric_faces() as u32))
-        .collect();
-    let us: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
-    let vs: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+    let (faces, us, vs) = support::random_points(&ev, n);
     c.bench_function(
         &format!("evaluate {n} random points, one thread, {label}"),
         |b| b.iter(|| ev.evaluate_many(&faces, &us, &vs).unwrap()),

@@ -9,8 +9,6 @@
 use criterion::{criterion_group, criterion_main, Criterion};
 use profsubd::construct::shell::{hollow_solid, OffsetSettings, OffsetSurface};
 use profsubd::eval::Evaluator;
-use rand::{Rng, SeedableRng};
-use rand_chacha::ChaCha8Rng;
 use std::time::Instant;
 
 mod support;
@@ -26,12 +24,7 @@ fn benches(c: &mut Criterion) {
     let thickness = 0.002 * mesh.bounding_box_diagonal();
     let ev = Evaluator::new(mesh, &options).unwrap();
     let n = 10_000;
-    let mut rng = ChaCha8Rng::seed_from_u64(7);
-    let faces: Vec<u32> = (0..n)
-        .map(|_| rng.random_range(0..ev.num_parametric_faces() as u32))
-        .collect();
-    let us: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
-    let vs: Vec<f64> = (0..n).map(|_| rng.random::<f64>()).collect();
+    let (faces, us, vs) = support::random_points(&ev, n);
     c.bench_function(&format!("limit at {n} random points, {label}"), |b| {
         b.iter(|| {
             for i in 0..n {

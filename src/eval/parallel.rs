@@ -30,14 +30,19 @@ pub(crate) fn map_ranges<T: Send>(
         return vec![f(0..n)];
     }
     let chunk = n.div_ceil(threads);
+    on_threads(threads, |t| f(t * chunk..((t + 1) * chunk).min(n)))
+}
+
+/// `f(t)` for every `t` in `0..threads`, in order, each on its own thread (at least one).
+/// `f(0)` runs on the calling thread: it is the one that reports progress, and the C API
+/// promises callbacks on the thread that made the call. A panic on any thread resumes here.
+pub(crate) fn on_threads<T: Send>(threads: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
     let f = &f;
     std::thread::scope(|scope| {
-        let handles: Vec<_> = (1..threads)
-            .map(|t| scope.spawn(move || f(t * chunk..((t + 1) * chunk).min(n))))
+        let handles: Vec<_> = (1..threads.max(1))
+            .map(|t| scope.spawn(move || f(t)))
             .collect();
-        // The first range on the calling thread: it is the one that reports progress, and
-        // the C API promises callbacks on the thread that made the call.
-        let mut out = vec![f(0..chunk.min(n))];
+        let mut out = vec![f(0)];
         out.extend(
             handles
                 .into_iter()

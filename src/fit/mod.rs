@@ -33,7 +33,7 @@ use glam::DVec3;
 
 use crate::control::Control;
 use crate::error::{Error, Result};
-use crate::eval::parallel::resolve_threads;
+use crate::eval::parallel::{on_threads, resolve_threads};
 use crate::eval::vertex_limit::limit_stencils_with;
 use crate::eval::StencilTable;
 use crate::mesh::Mesh;
@@ -349,14 +349,7 @@ fn krylov(
         }
         out
     };
-    let mut columns: Vec<_> = std::thread::scope(|scope| {
-        let others: Vec<_> = (1..threads).map(|t| scope.spawn(move || run(t))).collect();
-        let mut all = run(0);
-        for h in others {
-            all.extend(h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
-        }
-        all
-    });
+    let mut columns: Vec<_> = on_threads(threads, run).into_iter().flatten().collect();
     columns.sort_by_key(|(j, _)| *j);
     let mut out = vec![DVec3::ZERO; n];
     let mut iterations = 0;

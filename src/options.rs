@@ -20,6 +20,21 @@ pub enum BoundaryInterpolation {
     EdgeAndCorner,
 }
 
+impl BoundaryInterpolation {
+    /// Every rule, in OpenSubdiv's enum order: for code and tests that try each.
+    ///
+    /// ```
+    /// use profsubd::BoundaryInterpolation;
+    /// assert_eq!(BoundaryInterpolation::ALL.len(), 3);
+    /// assert_eq!(BoundaryInterpolation::ALL[2], BoundaryInterpolation::default());
+    /// ```
+    pub const ALL: [BoundaryInterpolation; 3] = [
+        BoundaryInterpolation::None,
+        BoundaryInterpolation::EdgeOnly,
+        BoundaryInterpolation::EdgeAndCorner,
+    ];
+}
+
 /// How semi-sharp crease sharpness decays (`Sdc::Options::CreasingMethod`).
 /// In JSON inputs: `"uniform"`, `"chaikin"`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, serde::Deserialize)]

@@ -98,11 +98,7 @@ fn every_shape_matches_refinement_at_regular_refined_vertices() {
             .flat_map(|f| mesh.face(f).to_vec())
             .collect();
         let near_degenerate = |f: u32| mesh.face(f as usize).iter().any(|v| bad.contains(v));
-        for boundary in [
-            BoundaryInterpolation::None,
-            BoundaryInterpolation::EdgeOnly,
-            BoundaryInterpolation::EdgeAndCorner,
-        ] {
+        for boundary in BoundaryInterpolation::ALL {
             for crease_method in [CreaseMethod::Uniform, CreaseMethod::Chaikin] {
                 let options = SubdivOptions {
                     boundary,

@@ -111,11 +111,7 @@ fn vertices_have_a_surface_exactly_when_one_of_their_faces_has() {
             continue; // catmark_car, pole360...: slow to build, nothing new
         }
         let mesh = read_obj_file(&row.path).unwrap().mesh;
-        for boundary in [
-            BoundaryInterpolation::None,
-            BoundaryInterpolation::EdgeOnly,
-            BoundaryInterpolation::EdgeAndCorner,
-        ] {
+        for boundary in BoundaryInterpolation::ALL {
             let options = SubdivOptions {
                 boundary,
                 crease_method: CreaseMethod::Uniform,

@@ -165,11 +165,7 @@ mod tests {
             let mut parts = grid(3, holes);
             parts.positions.push(DVec3::splat(9.0));
             let mesh = Mesh::from_parts(parts).unwrap();
-            for boundary in [
-                BoundaryInterpolation::None,
-                BoundaryInterpolation::EdgeOnly,
-                BoundaryInterpolation::EdgeAndCorner,
-            ] {
+            for boundary in BoundaryInterpolation::ALL {
                 let options = SubdivOptions {
                     boundary,
                     ..Default::default()

@@ -69,12 +69,14 @@ fn benches(c: &mut Criterion) {
     });
     // Batches, one thread each (`evaluate_points`: the same per-point work behind the
     // batch's checks).
-    c.bench_function(&format!("limit batch of {n} points, 1 thread, {label}"), |b| {
-        b.iter(|| std::hint::black_box(ev.evaluate_points(Domain::Ptex, &faces, &us, &vs)))
-    });
-    c.bench_function(&format!("offset batch of {n} points, 1 thread, {label}"), |b| {
-        b.iter(|| std::hint::black_box(level0.evaluate_points(Domain::Ptex, &faces, &us, &vs)))
-    });
+    c.bench_function(
+        &format!("limit batch of {n} points, 1 thread, {label}"),
+        |b| b.iter(|| std::hint::black_box(ev.evaluate_points(Domain::Ptex, &faces, &us, &vs))),
+    );
+    c.bench_function(
+        &format!("offset batch of {n} points, 1 thread, {label}"),
+        |b| b.iter(|| std::hint::black_box(level0.evaluate_points(Domain::Ptex, &faces, &us, &vs))),
+    );
     // Each round: the fastest of three passes of each (a pass preempted by another process
     // is slower, never faster).
     let fastest = |pass: &dyn Fn()| {
@@ -111,9 +113,7 @@ fn benches(c: &mut Criterion) {
         let offset = OffsetSurface::new(mesh, &options, settings).unwrap();
         c.bench_function(
             &format!("offset at {n} random points, level {level}, {label}"),
-            |b| {
-                b.iter(|| offset_pass(&offset, &faces, &us, &vs))
-            },
+            |b| b.iter(|| offset_pass(&offset, &faces, &us, &vs)),
         );
     }
 

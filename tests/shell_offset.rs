@@ -664,12 +664,20 @@ fn batches_match_points_on_any_thread_count_and_keep_error_kinds() {
         let faces: Vec<u32> = (0..n)
             .map(|i| (i * 7919) as u32 % offset.num_parametric_faces())
             .collect();
-        let u: Vec<f64> = (0..n).map(|i| (i as f64 * 0.618_033_988_75).fract()).collect();
-        let v: Vec<f64> = (0..n).map(|i| (i as f64 * 0.414_213_562_37).fract()).collect();
+        let u: Vec<f64> = (0..n)
+            .map(|i| (i as f64 * 0.618_033_988_75).fract())
+            .collect();
+        let v: Vec<f64> = (0..n)
+            .map(|i| (i as f64 * 0.414_213_562_37).fract())
+            .collect();
         let mut runs = Vec::new();
         for threads in [1, 2, 0] {
             offset.set_threads(threads);
-            runs.push(offset.evaluate_points(Domain::Ptex, &faces, &u, &v).unwrap());
+            runs.push(
+                offset
+                    .evaluate_points(Domain::Ptex, &faces, &u, &v)
+                    .unwrap(),
+            );
         }
         assert!(runs.iter().all(|r| *r == runs[0]), "level {level}");
         let base = Evaluator::new(&mesh, &opts).unwrap();
@@ -711,19 +719,21 @@ fn batches_match_points_on_any_thread_count_and_keep_error_kinds() {
 /// A non-manifold mesh (three quads on one edge) is refused as such.
 #[test]
 fn a_non_manifold_mesh_is_refused_as_non_manifold() {
-    let mut parts = MeshParts::default();
-    parts.positions = vec![
-        DVec3::new(0.0, 0.0, 0.0),
-        DVec3::new(0.0, 1.0, 0.0),
-        DVec3::new(1.0, 0.0, 0.0),
-        DVec3::new(1.0, 1.0, 0.0),
-        DVec3::new(-1.0, 0.0, 0.0),
-        DVec3::new(-1.0, 1.0, 0.0),
-        DVec3::new(0.0, 0.0, 1.0),
-        DVec3::new(0.0, 1.0, 1.0),
-    ];
-    parts.face_sizes = vec![4, 4, 4];
-    parts.face_indices = vec![0, 2, 3, 1, 1, 5, 4, 0, 0, 6, 7, 1];
+    let parts = MeshParts {
+        positions: vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(-1.0, 0.0, 0.0),
+            DVec3::new(-1.0, 1.0, 0.0),
+            DVec3::new(0.0, 0.0, 1.0),
+            DVec3::new(0.0, 1.0, 1.0),
+        ],
+        face_sizes: vec![4, 4, 4],
+        face_indices: vec![0, 2, 3, 1, 1, 5, 4, 0, 0, 6, 7, 1],
+        ..MeshParts::default()
+    };
     let mesh = Mesh::from_parts(parts).unwrap();
     let e = OffsetSurface::new(&mesh, &options(&mesh), OffsetSettings::new(0.1)).unwrap_err();
     assert!(
@@ -750,6 +760,9 @@ fn an_unmet_tolerance_is_a_numerical_failure() {
     );
     for t in [0.0, -1.0, f64::NAN] {
         let e = offset_within(&mesh, &opts, OffsetSettings::new(c), t).unwrap_err();
-        assert!(matches!(&e, Error::InvalidArgument(m) if m.contains("tolerance")), "{e:?}");
+        assert!(
+            matches!(&e, Error::InvalidArgument(m) if m.contains("tolerance")),
+            "{e:?}"
+        );
     }
 }

@@ -254,7 +254,8 @@ fn feathered(d0: DVec3, own: &[DVec3], sources: &[(f64, u32)], sectors: &[Vec<DV
         let own_side: Vec<usize> = own
             .iter()
             .filter_map(|o| {
-                (0..normals.len()).max_by(|&a, &b| normals[a].dot(*o).total_cmp(&normals[b].dot(*o)))
+                (0..normals.len())
+                    .max_by(|&a, &b| normals[a].dot(*o).total_cmp(&normals[b].dot(*o)))
             })
             .collect();
         for (k, &nj) in normals.iter().enumerate() {

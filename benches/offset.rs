@@ -5,10 +5,15 @@
 //! from one run (not asserted). On a loaded machine criterion's separate runs of the two
 //! drift apart, so the ratio is also measured *paired*: rounds timing the limit then the
 //! offset back to back over the same points, the median of the per-round ratios printed.
+//!
+//! Instruction counts, which the machine's load does not change: with
+//! `PROFSUBD_OFFSET_PASSES=K` the bench only runs `K` passes of [`limit_pass`] and of
+//! [`offset_pass`] (one thread, the same points) and exits; under
+//! `valgrind --tool=callgrind` their inclusive counts give the ratio (README).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use profsubd::construct::shell::{hollow_solid, OffsetSettings, OffsetSurface};
-use profsubd::eval::Evaluator;
+use profsubd::eval::{Domain, Evaluator};
 use std::time::Instant;
 
 mod support;
@@ -16,23 +21,55 @@ mod support;
 /// Rounds of the paired ratio measurement.
 const PAIRED_ROUNDS: usize = 21;
 
+/// The limit at every point, one by one.
+#[inline(never)]
+fn limit_pass(ev: &Evaluator, faces: &[u32], us: &[f64], vs: &[f64]) {
+    for i in 0..faces.len() {
+        std::hint::black_box(ev.evaluate(faces[i], us[i], vs[i]).unwrap());
+    }
+}
+
+/// The offset at every point, one by one.
+#[inline(never)]
+fn offset_pass(offset: &OffsetSurface, faces: &[u32], us: &[f64], vs: &[f64]) {
+    for i in 0..faces.len() {
+        std::hint::black_box(offset.evaluate(faces[i], us[i], vs[i]).unwrap());
+    }
+}
+
 fn benches(c: &mut Criterion) {
     let model = support::bottle(64, 48);
     let mesh = &model.mesh;
     let options = mesh.options().resolve();
     let label = format!("bottle {} quads", mesh.num_faces());
     let thickness = 0.002 * mesh.bounding_box_diagonal();
-    let ev = Evaluator::new(mesh, &options).unwrap();
+    // One thread for the batches too: the offset's batches run on its evaluator's threads.
+    let ev = Evaluator::with_threads(mesh, &options, 1).unwrap();
     let n = 10_000;
     let (faces, us, vs) = support::random_points(&ev, n);
+    let mut level0 = OffsetSurface::new(mesh, &options, OffsetSettings::new(thickness)).unwrap();
+    level0.set_threads(1);
+    if let Ok(passes) = std::env::var("PROFSUBD_OFFSET_PASSES") {
+        let passes: usize = passes.parse().expect("PROFSUBD_OFFSET_PASSES: a count");
+        for _ in 0..passes {
+            limit_pass(&ev, &faces, &us, &vs);
+            offset_pass(&level0, &faces, &us, &vs);
+        }
+        std::process::exit(0);
+    }
     c.bench_function(&format!("limit at {n} random points, {label}"), |b| {
-        b.iter(|| {
-            for i in 0..n {
-                std::hint::black_box(ev.evaluate(faces[i], us[i], vs[i]).unwrap());
-            }
-        })
+        b.iter(|| limit_pass(&ev, &faces, &us, &vs))
     });
-    let level0 = OffsetSurface::new(mesh, &options, OffsetSettings::new(thickness)).unwrap();
+    // Batches, one thread each (`evaluate_points`: the same per-point work behind the
+    // batch's checks).
+    c.bench_function(
+        &format!("limit batch of {n} points, 1 thread, {label}"),
+        |b| b.iter(|| std::hint::black_box(ev.evaluate_points(Domain::Ptex, &faces, &us, &vs))),
+    );
+    c.bench_function(
+        &format!("offset batch of {n} points, 1 thread, {label}"),
+        |b| b.iter(|| std::hint::black_box(level0.evaluate_points(Domain::Ptex, &faces, &us, &vs))),
+    );
     // Each round: the fastest of three passes of each (a pass preempted by another process
     // is slower, never faster).
     let fastest = |pass: &dyn Fn()| {
@@ -46,16 +83,8 @@ fn benches(c: &mut Criterion) {
     };
     let mut ratios: Vec<f64> = (0..PAIRED_ROUNDS)
         .map(|_| {
-            let limit = fastest(&|| {
-                for i in 0..n {
-                    std::hint::black_box(ev.evaluate(faces[i], us[i], vs[i]).unwrap());
-                }
-            });
-            let offset = fastest(&|| {
-                for i in 0..n {
-                    std::hint::black_box(level0.evaluate(faces[i], us[i], vs[i]).unwrap());
-                }
-            });
+            let limit = fastest(&|| limit_pass(&ev, &faces, &us, &vs));
+            let offset = fastest(&|| offset_pass(&level0, &faces, &us, &vs));
             offset / limit
         })
         .collect();
@@ -77,13 +106,7 @@ fn benches(c: &mut Criterion) {
         let offset = OffsetSurface::new(mesh, &options, settings).unwrap();
         c.bench_function(
             &format!("offset at {n} random points, level {level}, {label}"),
-            |b| {
-                b.iter(|| {
-                    for i in 0..n {
-                        std::hint::black_box(offset.evaluate(faces[i], us[i], vs[i]).unwrap());
-                    }
-                })
-            },
+            |b| b.iter(|| offset_pass(&offset, &faces, &us, &vs)),
         );
     }
 

@@ -1571,11 +1571,13 @@ enum profsubd_status profsubd_revolve(const double *profile,
  * `tolerance` (model units) at the lowest level from `level` on whose measured thickness is within
  * it of `thickness` (0: no tolerance). `flags`: `PROFSUBD_OFFSET_OUTWARD`,
  * `PROFSUBD_OFFSET_ACCEPT_FOLDS`. The offset is built at each call (cost of an evaluator of
- * the refined mesh): batch the points. Errors (`PROFSUBD_ERROR_INVALID_ARGUMENT`, nothing
- * written): thickness not > 0 or NaN, a bad level, flag or tolerance, a non-manifold mesh,
- * a vertex without normal or a crease too sharp to miter (naming the vertex), an offset
- * that folds (naming where) without `PROFSUBD_OFFSET_ACCEPT_FOLDS`, a tolerance no level
- * meets, a bad point (naming its index).
+ * the refined mesh): batch the points on the evaluator's threads (all cores; the result
+ * does not depend on them). Errors (nothing written): `PROFSUBD_ERROR_INVALID_ARGUMENT` for
+ * thickness not > 0 or NaN, a bad level, flag or tolerance, a vertex without normal or a
+ * crease too sharp to miter (naming the vertex), an offset that folds (naming where)
+ * without `PROFSUBD_OFFSET_ACCEPT_FOLDS`, a bad point (naming its index);
+ * `PROFSUBD_ERROR_NON_MANIFOLD` for a non-manifold mesh; `PROFSUBD_ERROR_NUMERICAL` for a
+ * tolerance no level meets.
  */
 enum profsubd_status profsubd_offset_evaluate(const struct profsubd_mesh *mesh,
                                               const struct profsubd_options *options,

@@ -11,10 +11,10 @@ mod osd_shapes;
 
 use glam::DVec3;
 use profsubd::construct::shell::{measure, offset_within, OffsetSettings, OffsetSurface, Side};
-use profsubd::eval::Evaluator;
+use profsubd::eval::{Domain, Evaluator};
 use profsubd::io::obj::read_obj_file;
 use profsubd::mesh::{Crease, MeshParts, SHARPNESS_INFINITE};
-use profsubd::{revolve, Mesh, RevolveInput, Settings, SubdivOptions};
+use profsubd::{revolve, Error, Mesh, RevolveInput, Settings, SubdivOptions};
 
 const R: f64 = 2.0;
 
@@ -295,6 +295,7 @@ fn thickness_table() {
     }
     for (name, f) in [
         ("profiles/bottle.obj", 0.005),
+        ("profiles/bottle.obj", 0.02),
         ("profiles/vase.obj", 0.01),
         ("meshes/cube_creased.obj", 0.02),
         ("meshes/cube_creased.obj", 0.002),
@@ -304,6 +305,9 @@ fn thickness_table() {
             read_obj_file(&examples.join(name)).unwrap().mesh,
             f,
         ));
+    }
+    if let Some(b) = sharp_box() {
+        models.push(("sharp box (catmark_cube, all edges sharp)".into(), b, 0.05));
     }
     for (name, mesh, fraction) in &models {
         let c = fraction * mesh.bounding_box_diagonal();
@@ -582,41 +586,183 @@ fn sharp_box() -> Option<Mesh> {
     Some(Mesh::from_parts(parts).unwrap())
 }
 
-/// A box with every edge infinitely sharp: the offset of a thin shell is the inner box,
-/// `c` from the walls to 1e-10 c at every lattice point and level (feathered miters); a crust
-/// finer than the corners' miters folds, and the refusal names the corner.
+/// A box with every edge infinitely sharp: the offset is the inner box, `c` from the walls
+/// to 1e-10 c at every lattice point and level, with the corners' miters feathered along
+/// both walls and the creases (corners.rs): at c = 0.2 the level-3 crust's faces (1/4 wide)
+/// are narrower than the corner miter's sideways reach (c √2 = 0.28), which folded before.
 #[test]
-fn sharp_box_offsets_exactly_and_names_the_corner_where_it_folds() {
+fn sharp_box_offsets_exactly_next_to_its_corners_at_every_level() {
     let Some(mesh) = sharp_box() else { return };
     let opts = options(&mesh);
-    for level in 0..=3 {
-        let settings = OffsetSettings {
-            level,
-            ..OffsetSettings::new(0.05)
-        };
-        let offset = OffsetSurface::new(&mesh, &opts, settings).unwrap();
-        let r = measure(&offset, 5).unwrap();
-        eprintln!(
-            "sharp box (side 2), c = 0.05, level {level}: thickness / c min {:.15} max {:.15}",
-            r.min, r.max
-        );
-        assert!(
-            (r.min - 1.0).abs() < 1e-10 && (r.max - 1.0).abs() < 1e-10,
-            "{r:?}"
-        );
+    for (c, levels) in [(0.05, 0..=3), (0.2, 0..=3)] {
+        for level in levels {
+            let settings = OffsetSettings {
+                level,
+                ..OffsetSettings::new(c)
+            };
+            let offset = OffsetSurface::new(&mesh, &opts, settings)
+                .unwrap_or_else(|e| panic!("c = {c}, level {level}: {e}"));
+            let r = measure(&offset, 5).unwrap();
+            // The inner box: every coordinate within [c − 1, 1 − c] (side 2 about 0).
+            let n = 8;
+            let mut outside = 0.0f64;
+            for f in 0..offset.num_parametric_faces() {
+                for i in 0..=n {
+                    for j in 0..=n {
+                        let (u, v) = (i as f64 / n as f64, j as f64 / n as f64);
+                        let p = offset.evaluate(f, u, v).unwrap().position;
+                        // catmark_cube is turned by 45° about z.
+                        let q = DVec3::new(p.x + p.y, p.y - p.x, p.z * 2f64.sqrt());
+                        let over = q.abs().max_element() / 2f64.sqrt() - (1.0 - c);
+                        outside = outside.max(over);
+                    }
+                }
+            }
+            eprintln!(
+                "sharp box (side 2), c = {c}, level {level}: thickness / c min {:.15} max \
+                 {:.15}, largest coordinate beyond the inner box {outside:.2e}",
+                r.min, r.max
+            );
+            assert!(
+                (r.min - 1.0).abs() < 1e-10 && (r.max - 1.0).abs() < 1e-10,
+                "c = {c}, level {level}: {r:?}"
+            );
+            // (The OBJ gives the corners to 6 decimals.)
+            assert!(outside < 1e-6, "c = {c}, level {level}: {outside}");
+        }
     }
-    // Level 3: faces 1/4 wide against a corner miter reaching c √2 = 0.28 sideways.
+    // At c = 0.3 the corners' feathering reach (3 √2 c = 1.27) is more than half a side:
+    // the feathering of opposite walls overlaps, the level-3 crust folds, and the refusal
+    // names the crease or corner vertex next to the fold.
     let settings = OffsetSettings {
         level: 3,
-        ..OffsetSettings::new(0.2)
+        ..OffsetSettings::new(0.3)
     };
-    let e = OffsetSurface::new(&mesh, &opts, settings)
-        .unwrap_err()
-        .to_string();
-    eprintln!("{e}");
+    let e = OffsetSurface::new(&mesh, &opts, settings).unwrap_err();
     assert!(
-        e.contains("folds at face 0 of the mesh refined 3 times")
-            && e.contains("next to the crease or corner at vertex 0 of the mesh refined 3 times"),
-        "{e}"
+        matches!(&e, Error::InvalidArgument(m) if m.contains("folds at face")
+            && m.contains("next to the crease or corner at vertex")
+            && m.contains("of the mesh refined 3 times")),
+        "{e:?}"
     );
+}
+
+/// Batches: on any thread count the same bits as point by point; the surface part of a
+/// sample is the evaluator's exactly (the leaf patch kept beside the crust is the
+/// evaluator's); errors keep their kind and name the lowest failing point.
+#[test]
+fn batches_match_points_on_any_thread_count_and_keep_error_kinds() {
+    let mesh = sphere();
+    let opts = options(&mesh);
+    for level in [0, 2] {
+        let settings = OffsetSettings {
+            level,
+            ..OffsetSettings::new(0.05 * R)
+        };
+        let mut offset = OffsetSurface::new(&mesh, &opts, settings).unwrap();
+        let n = 3000;
+        let faces: Vec<u32> = (0..n)
+            .map(|i| (i * 7919) as u32 % offset.num_parametric_faces())
+            .collect();
+        let u: Vec<f64> = (0..n)
+            .map(|i| (i as f64 * 0.618_033_988_75).fract())
+            .collect();
+        let v: Vec<f64> = (0..n)
+            .map(|i| (i as f64 * 0.414_213_562_37).fract())
+            .collect();
+        let mut runs = Vec::new();
+        for threads in [1, 2, 0] {
+            offset.set_threads(threads);
+            runs.push(
+                offset
+                    .evaluate_points(Domain::Ptex, &faces, &u, &v)
+                    .unwrap(),
+            );
+        }
+        assert!(runs.iter().all(|r| *r == runs[0]), "level {level}");
+        let base = Evaluator::new(&mesh, &opts).unwrap();
+        for i in 0..n {
+            let one = offset.evaluate(faces[i], u[i], v[i]).unwrap();
+            assert_eq!(runs[0][i], Some(one), "level {level}, point {i}");
+            let (g, s, t, scale) = offset.locate(faces[i], u[i], v[i]).unwrap();
+            let fine = offset.fine().evaluate(g, s, t).unwrap();
+            assert_eq!(one.surface.position, fine.position);
+            assert_eq!(one.surface.du, fine.du * scale);
+            // Through the refined mesh, the input's limit.
+            let b = base.evaluate(faces[i], u[i], v[i]).unwrap();
+            assert!((one.surface.position - b.position).length() < 1e-13 * R);
+        }
+        // Errors: the lowest bad point, named, its kind kept.
+        let mut bad_u = u.clone();
+        bad_u[2500] = 1.5;
+        bad_u[1700] = f64::NAN;
+        for threads in [1, 2] {
+            offset.set_threads(threads);
+            let e = offset
+                .evaluate_points(Domain::Ptex, &faces, &bad_u, &v)
+                .unwrap_err();
+            assert!(
+                matches!(&e, Error::InvalidArgument(m) if m.starts_with("point 1700: ")),
+                "{e:?}"
+            );
+        }
+        let e = offset
+            .evaluate_points(Domain::Ptex, &faces, &u[1..], &v)
+            .unwrap_err();
+        assert!(
+            matches!(&e, Error::InvalidArgument(m) if m.contains("same length")),
+            "{e:?}"
+        );
+    }
+}
+
+/// A non-manifold mesh (three quads on one edge) is refused as such.
+#[test]
+fn a_non_manifold_mesh_is_refused_as_non_manifold() {
+    let parts = MeshParts {
+        positions: vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(-1.0, 0.0, 0.0),
+            DVec3::new(-1.0, 1.0, 0.0),
+            DVec3::new(0.0, 0.0, 1.0),
+            DVec3::new(0.0, 1.0, 1.0),
+        ],
+        face_sizes: vec![4, 4, 4],
+        face_indices: vec![0, 2, 3, 1, 1, 5, 4, 0, 0, 6, 7, 1],
+        ..MeshParts::default()
+    };
+    let mesh = Mesh::from_parts(parts).unwrap();
+    let e = OffsetSurface::new(&mesh, &options(&mesh), OffsetSettings::new(0.1)).unwrap_err();
+    assert!(
+        matches!(&e, Error::NonManifold(m) if m.contains("an offset needs a manifold mesh")),
+        "{e:?}"
+    );
+}
+
+/// A tolerance no crust level meets is a numerical failure (the procedure did not reach it),
+/// naming the error reached at each level; a bad tolerance is an invalid argument.
+#[test]
+fn an_unmet_tolerance_is_a_numerical_failure() {
+    let Some(dir) = osd_shapes::shapes_dir() else {
+        return;
+    };
+    let mesh = read_obj_file(&dir.join("catmark_cube.obj")).unwrap().mesh;
+    let opts = options(&mesh);
+    let c = 0.02 * mesh.bounding_box_diagonal();
+    let e = offset_within(&mesh, &opts, OffsetSettings::new(c), 1e-13 * c).unwrap_err();
+    assert!(
+        matches!(&e, Error::NumericalFailure(m)
+            if m.contains("no crust level keeps the thickness") && m.contains("level 6: ")),
+        "{e:?}"
+    );
+    for t in [0.0, -1.0, f64::NAN] {
+        let e = offset_within(&mesh, &opts, OffsetSettings::new(c), t).unwrap_err();
+        assert!(
+            matches!(&e, Error::InvalidArgument(m) if m.contains("tolerance")),
+            "{e:?}"
+        );
+    }
 }

@@ -359,6 +359,17 @@ impl Evaluator {
         }
     }
 
+    /// The bicubic patch of parametric face `face` when the whole face is one regular leaf
+    /// ([`Evaluator::evaluate`] there is `patch.evaluate(u, v)` bit for bit, unscaled),
+    /// `None` otherwise: for callers that keep their own per-face data beside the patch
+    /// (the shell's crust), so that one read serves both.
+    pub(crate) fn root_patch(&self, face: u32) -> Option<BicubicPatch> {
+        match self.roots.get(face as usize)? {
+            Node::Patch(p) => Some(self.values.patches[*p as usize].clone()),
+            _ => None,
+        }
+    }
+
     fn no_surface_error(&self, face: u32) -> Error {
         let base = self.ptex.locate(face).map_or(face, |(f, _)| f);
         if self.mesh.holes().contains(&base) {
@@ -502,8 +513,8 @@ impl Evaluator {
 
 /// `eval(faces[i], u[i], v[i])` for every point, on `threads` threads (0: all cores); the
 /// three lists must have the same length. An [`Error::InvalidArgument`] names the point (the
-/// first bad one, whatever the thread count).
-fn each_point<T: Send>(
+/// first bad one, whatever the thread count); other errors pass unchanged.
+pub(crate) fn each_point<T: Send>(
     faces: &[u32],
     u: &[f64],
     v: &[f64],
@@ -520,7 +531,7 @@ fn each_point<T: Send>(
 }
 
 /// A batch's `faces`, `u` and `v` must have the same length ([`Error::InvalidArgument`]).
-pub(crate) fn check_point_lists(faces: &[u32], u: &[f64], v: &[f64]) -> Result<()> {
+fn check_point_lists(faces: &[u32], u: &[f64], v: &[f64]) -> Result<()> {
     if faces.len() != u.len() || faces.len() != v.len() {
         return Err(Error::invalid_argument(format!(
             "{} faces, {} u and {} v values: the three lists must have the same length",

@@ -27,9 +27,14 @@
 //!   stays 1: the offset is still `c` from the vertex's tangent plane (on a flat side it is
 //!   exactly the true offset, trimmed where the sides meet); only where it lies along the
 //!   side spreads out, so that the crust's sideways slope stays below `1.875 / FEATHER`
-//!   of the surface's. A vertex takes its nearest crease vertex only: where creases meet at
-//!   a corner (three or more sectors) the shifts of two creases do not add up, and a crust
-//!   finer than the miter can still fold there (the fold check names the face).
+//!   of the surface's.
+//! - **Next to a corner** (three or more sectors) one crease's shift is not enough: on a
+//!   box's wall next to a corner the inner wall must keep `c` from both other walls, and a
+//!   vertex shifted away from one of them only would bring the offset back across the
+//!   corner's miter within one face (the fold of fine crusts at corners, before). There
+//!   the shifts of the different walls add up, and the crease vertices along each crease
+//!   are feathered from the corner too (`feather`): the inner wall of a box is then
+//!   exactly the inner box at every level.
 //! - **No normal** (the derivatives are parallel at every face corner of the vertex: a
 //!   collapsed control mesh): an error naming the vertex.
 
@@ -121,71 +126,167 @@ pub fn corner_directions(
             normals => miter(normals, || name(v)),
         })
         .collect::<Result<Vec<DVec3>>>()?;
-    let creases: Vec<bool> = sectors.iter().map(|s| s.len() > 1).collect();
-    let from = feather(ev, &position, &creases, thickness, &mut directions);
+    let from = feather(ev, &position, &sectors, thickness, &mut directions);
     Ok((directions, from))
 }
 
-/// Feather the miters of the crease vertices (`crease[v]`) into the vertices around them
-/// (see the module doc): each vertex within [`FEATHER`]` · c tan(θ/2)` of its nearest crease
-/// vertex along the mesh's edges (limit positions `position`) gets that miter's sideways
-/// part, relative to its own normal, weighted linearly by distance. Returns the crease
-/// vertex each vertex carries the miter of (itself at a crease).
+/// Two source normals closer than this (cosine) are one wall: the nearer source's
+/// constraint stands for both.
+const SAME_WALL: f64 = 0.94;
+
+/// A second wall's normal must leave the span of the normals already constrained by this
+/// much (sine) to be feathered in too (see [`feather`]).
+const INDEPENDENT: f64 = 0.05;
+
+/// Feather the miters of the crease and corner vertices (two or more sectors) into the
+/// vertices around them (see the module doc). Each such *source* `x` reaches the vertices
+/// within [`FEATHER`]` · c tan(θ/2)` of it along the mesh's edges (limit positions
+/// `position`), `|m|² = 1 + tan²(θ/2)`, with weight `w` falling linearly from 1 at `x` to 0
+/// there; it feathers vertices of fewer sectors (smooth vertices from creases and corners,
+/// crease vertices from corners along their crease).
+///
+/// At a vertex `v` with own normals `N_v` and direction `d₀` (its normal or miter), each
+/// normal `n` of a source other than those on `v`'s own sides (for each own normal, the
+/// source's closest) is a constraint `d · n ≥ d₀ · n + w (1 − d₀ · n)`: at the source
+/// (`w = 1`) the offset is `c` from that wall's plane, as the miter puts it, and the
+/// constraint fades to nothing at the reach. `d` is the shortest correction of `d₀`
+/// orthogonal to `N_v` meeting them (`d · n = 1` for the own normals stays). With one
+/// source this is exactly the old rule: the miter's sideways part times `w`. Constraints
+/// are taken by decreasing weight; a normal within [`SAME_WALL`] of one taken is the same
+/// wall seen from a farther source and is skipped. Within reach of a corner (three or more
+/// sectors) the constraints of different walls add up (a second wall must leave the span
+/// of those taken by [`INDEPENDENT`]): next to a box corner the wall vertex `(a, b)` gets
+/// `n + w_x(a) e_x + w_y(b) e_y`, the crease vertex on the edge `(1, 1, w)`, and the inner
+/// wall is exactly the trimmed offset. Elsewhere only the nearest source counts (what two
+/// creases far from any corner would make of each other is not a corner's trimming).
+///
+/// Returns the source each vertex carries the feathering of (the nearest reaching it;
+/// itself at a crease or corner; `None` elsewhere).
 fn feather(
     ev: &Evaluator,
     position: &[DVec3],
-    crease: &[bool],
+    sectors: &[Vec<DVec3>],
     c: f64,
     dirs: &mut [DVec3],
 ) -> Vec<Option<u32>> {
     use std::cmp::Reverse;
     use std::collections::BinaryHeap;
     let level = Level::from_mesh_with_options(ev.mesh(), ev.options());
-    // The reach of each crease vertex's miter: FEATHER c tan(θ/2), |m|² = 1 + tan²(θ/2).
-    let reaches: Vec<f64> = dirs
-        .iter()
-        .map(|m| FEATHER * c * (m.length_squared() - 1.0).max(0.0).sqrt())
+    let n = position.len();
+    let count = |v: usize| sectors[v].len();
+    // The reach of each source's miter: FEATHER c tan(θ/2), |m|² = 1 + tan²(θ/2).
+    let reach: Vec<f64> = (0..n)
+        .map(|x| match count(x) {
+            0 | 1 => 0.0,
+            _ => FEATHER * c * (dirs[x].length_squared() - 1.0).max(0.0).sqrt(),
+        })
         .collect();
-    let reach = |x: usize| reaches[x];
-    // Multi-source Dijkstra: distance to and index of the nearest crease vertex.
-    let mut nearest: Vec<Option<(f64, usize)>> = vec![None; position.len()];
+    // Per vertex: the sources reaching it, with their weights.
+    let mut reached: Vec<Vec<(f64, u32)>> = vec![Vec::new(); n];
+    let mut dist = vec![f64::INFINITY; n];
+    let mut touched = Vec::new();
     let mut heap = BinaryHeap::new();
-    for x in (0..position.len()).filter(|&x| crease[x] && reach(x) > 0.0) {
-        nearest[x] = Some((0.0, x));
-        heap.push(Reverse((Ordered(0.0), x, x)));
-    }
-    while let Some(Reverse((Ordered(d), v, x))) = heap.pop() {
-        if nearest[v].is_some_and(|(best, _)| best < d) {
-            continue;
-        }
-        for &e in level.vertex_edges(v) {
-            let [a, b] = level.edge_vertices(e as usize);
-            let w = (if a as usize == v { b } else { a }) as usize;
-            let dw = d + (position[w] - position[v]).length();
-            if crease[w] || dw >= reach(x) || nearest[w].is_some_and(|(best, _)| best <= dw) {
+    for x in (0..n).filter(|&x| reach[x] > 0.0) {
+        // Dijkstra from x within its reach, through vertices of fewer sectors than x.
+        dist[x] = 0.0;
+        touched.push(x);
+        heap.push(Reverse((Ordered(0.0), x)));
+        while let Some(Reverse((Ordered(d), v))) = heap.pop() {
+            if d > dist[v] || (v != x && count(v) >= count(x)) {
                 continue;
             }
-            nearest[w] = Some((dw, x));
-            heap.push(Reverse((Ordered(dw), w, x)));
+            for &e in level.vertex_edges(v) {
+                let [a, b] = level.edge_vertices(e as usize);
+                let w = (if a as usize == v { b } else { a }) as usize;
+                let dw = d + (position[w] - position[v]).length();
+                if dw >= reach[x] || dw >= dist[w] {
+                    continue;
+                }
+                if dist[w].is_infinite() {
+                    touched.push(w);
+                }
+                dist[w] = dw;
+                heap.push(Reverse((Ordered(dw), w)));
+            }
         }
+        for &v in &touched {
+            if v != x && (1..count(x)).contains(&count(v)) {
+                reached[v].push((1.0 - dist[v] / reach[x], x as u32));
+            }
+            dist[v] = f64::INFINITY;
+        }
+        touched.clear();
     }
-    for (v, near) in nearest.iter().enumerate() {
-        let Some((d, x)) = *near else { continue };
-        if crease[v] {
+    let mut from: Vec<Option<u32>> = (0..n).map(|v| (count(v) > 1).then_some(v as u32)).collect();
+    for (v, sources) in reached.iter_mut().enumerate() {
+        if sources.is_empty() {
             continue;
         }
-        let (normal, m) = (dirs[v], dirs[x]);
-        let weight = 1.0 - d / reach(x);
-        dirs[v] = normal + (m - normal * m.dot(normal)) * weight;
+        // By decreasing weight, ties by source index: deterministic.
+        sources.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+        if count(v) == 1 {
+            from[v] = Some(sources[0].1);
+        }
+        let corner_near = sources.iter().any(|&(_, x)| count(x as usize) > 2);
+        let used = if corner_near { sources.len() } else { 1 };
+        dirs[v] = feathered(dirs[v], &sectors[v], &sources[..used], sectors);
     }
-    nearest
-        .iter()
-        .enumerate()
-        .map(|(v, near)| match near {
-            Some((_, x)) => Some(*x as u32),
-            None => crease[v].then_some(v as u32),
-        })
-        .collect()
+    from
+}
+
+/// The feathered direction of a vertex with direction `d0` and own normals `own` under the
+/// constraints of `sources` (weight, vertex; by decreasing weight): see [`feather`].
+fn feathered(d0: DVec3, own: &[DVec3], sources: &[(f64, u32)], sectors: &[Vec<DVec3>]) -> DVec3 {
+    // An orthonormal basis of the normals constrained so far (the own ones first).
+    let mut basis: Vec<DVec3> = Vec::with_capacity(3);
+    let orthogonal = |basis: &[DVec3], n: DVec3| basis.iter().fold(n, |r, b| r - *b * b.dot(r));
+    for &o in own {
+        let r = orthogonal(&basis, o);
+        if r.length() > 1e-9 {
+            basis.push(r / r.length());
+        }
+    }
+    let mut taken: Vec<DVec3> = Vec::new();
+    let mut d = d0;
+    for &(w, x) in sources {
+        let normals = &sectors[x as usize];
+        // The source's normal on each of the vertex's own sides.
+        let own_side: Vec<usize> = own
+            .iter()
+            .filter_map(|o| {
+                (0..normals.len())
+                    .max_by(|&a, &b| normals[a].dot(*o).total_cmp(&normals[b].dot(*o)))
+            })
+            .collect();
+        for (k, &nj) in normals.iter().enumerate() {
+            if own_side.contains(&k) || taken.iter().any(|t| t.dot(nj) > SAME_WALL) {
+                continue;
+            }
+            let base = d0.dot(nj);
+            if base >= 1.0 {
+                continue;
+            }
+            let target = base + w * (1.0 - base);
+            let have = d.dot(nj);
+            if have >= target {
+                taken.push(nj);
+                continue;
+            }
+            let r = orthogonal(&basis, nj);
+            let len = r.length();
+            // The first wall may be nearly the own side's (a shallow crease: the correction
+            // is then w tan(θ/2), small); a second must be a different direction.
+            let needed = if taken.is_empty() { 1e-9 } else { INDEPENDENT };
+            if len < needed {
+                continue;
+            }
+            let rhat = r / len;
+            d += rhat * ((target - have) / len);
+            basis.push(rhat);
+            taken.push(nj);
+        }
+    }
+    d
 }
 
 /// A distance ordered for the heap (never NaN: sums of lengths of finite positions).

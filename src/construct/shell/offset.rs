@@ -18,6 +18,8 @@ use glam::DVec3;
 use super::corners::corner_directions;
 use super::crust::Crust;
 use crate::error::{Error, Result};
+use crate::eval::bspline::BicubicPatch;
+use crate::eval::evaluator::each_point;
 use crate::eval::ptex::PtexFaces;
 use crate::eval::{Domain, Evaluator, LimitSample};
 use crate::mesh::Mesh;
@@ -133,11 +135,20 @@ pub struct OffsetSurface {
     fine: Evaluator,
     /// The signed corner vector of every vertex of the refined mesh (`O = S − D`).
     corners: Vec<DVec3>,
-    /// The crust of every refined face, from its corner vectors: built once, so a point
-    /// reads one face's coefficients instead of four vertices' vectors.
-    crusts: Vec<Crust>,
+    /// Per refined face, its crust (built once, so a point reads one face's coefficients
+    /// instead of four vertices' vectors) and beside it the face's bicubic patch when the
+    /// face is one regular leaf of the evaluator: one read serves both.
+    faces: Vec<FaceRecord>,
     /// The crease vertex whose miter each refined vertex carries (fold messages).
     mitered_from: Vec<Option<u32>>,
+}
+
+/// What evaluating a point of one refined face reads.
+#[derive(Debug, Clone)]
+struct FaceRecord {
+    crust: Crust,
+    /// The surface, when the face is one bicubic patch ([`Evaluator::evaluate`] otherwise).
+    leaf: Option<BicubicPatch>,
 }
 
 /// Whether every face of `mesh` is a quad.
@@ -149,8 +160,8 @@ impl OffsetSurface {
     /// The offset of `mesh`'s limit surface under `options`. The crust level is
     /// `settings.level`, raised to 1 for a mesh with faces other than quads.
     ///
-    /// Errors ([`Error::InvalidArgument`]): a bad thickness or level; a non-manifold mesh; a
-    /// vertex without normal or a crease too sharp to miter ([`super::corners`]); with
+    /// Errors: [`Error::NonManifold`] for a non-manifold mesh; [`Error::InvalidArgument`]: a
+    /// bad thickness or level; a vertex without normal or a crease too sharp to miter ([`super::corners`]); with
     /// `accept_folds` false, an offset that folds on the lattice of
     /// [`FOLD_LATTICE`]` + 1` points a side of every refined face (the thickness is beyond
     /// the local radius of curvature on the concave side), naming the face and point.
@@ -158,7 +169,7 @@ impl OffsetSurface {
         settings.check()?;
         let report = crate::mesh::validate::check(mesh);
         if !report.is_manifold() {
-            return Err(Error::invalid_argument(format!(
+            return Err(Error::NonManifold(format!(
                 "an offset needs a manifold mesh: {} non-manifold edges, {} non-manifold \
                  vertices (first: {:?}), {} faces repeating a vertex",
                 report.non_manifold_edges.len(),
@@ -191,10 +202,13 @@ impl OffsetSurface {
             .into_iter()
             .map(|m| m * (sign * settings.thickness))
             .collect();
-        let crusts = (0..fine_mesh.num_faces())
+        let faces = (0..fine_mesh.num_faces())
             .map(|g| {
                 let f = fine_mesh.face(g);
-                Crust::new(&[0, 1, 2, 3].map(|k| corners[f[k] as usize]))
+                FaceRecord {
+                    crust: Crust::new(&[0, 1, 2, 3].map(|k| corners[f[k] as usize])),
+                    leaf: fine.root_patch(g as u32),
+                }
             })
             .collect();
         let mut first_child = Vec::with_capacity(mesh.num_faces());
@@ -210,7 +224,7 @@ impl OffsetSurface {
             quad: mesh.face_sizes().iter().map(|&n| n == 4).collect(),
             fine,
             corners,
-            crusts,
+            faces,
             mitered_from,
         };
         if !settings.accept_folds {
@@ -242,29 +256,50 @@ impl OffsetSurface {
 
     /// The offset at `(u, v)` of face `face` of the refined mesh (its own parameters),
     /// derivatives multiplied by `scale`.
+    ///
+    /// Errors ([`Error::InvalidArgument`]): as [`Evaluator::evaluate`].
     pub fn evaluate_fine(&self, face: u32, u: f64, v: f64, scale: f64) -> Result<OffsetSample> {
-        // The crust's coefficients are read before the surface is evaluated: a random face's
-        // two reads miss the cache, and issued first they wait for memory together.
-        // (`black_box` keeps the compiler from moving the read after the evaluation.)
-        let crust = std::hint::black_box(self.crusts.get(face as usize).copied());
-        let s = self.fine.evaluate(face, u, v)?;
-        // (A face out of range failed the evaluation: `crust` is there.)
-        let (value, du, dv) = crust.unwrap_or_default().evaluate(u, v);
-        let surface = LimitSample {
-            position: s.position,
-            du: s.du * scale,
-            dv: s.dv * scale,
+        if !(0.0..=1.0).contains(&u) || !(0.0..=1.0).contains(&v) {
+            // The evaluator's message.
+            self.fine.evaluate(face, u, v)?;
+        }
+        self.sample(face, u, v, scale)
+    }
+
+    /// [`OffsetSurface::evaluate_fine`] at `(u, v)` in `[0, 1]²`.
+    #[inline]
+    fn sample(&self, face: u32, u: f64, v: f64, scale: f64) -> Result<OffsetSample> {
+        let Some(record) = self.faces.get(face as usize) else {
+            return Err(Error::invalid_argument(format!(
+                "face {face} is out of range; the mesh has {} parametric faces",
+                self.faces.len()
+            )));
         };
-        Ok(OffsetSample {
+        let s = match &record.leaf {
+            Some(patch) => {
+                let (position, du, dv) = patch.evaluate(u, v);
+                LimitSample { position, du, dv }
+            }
+            None => self.fine.evaluate(face, u, v)?,
+        };
+        let (value, du, dv) = record.crust.evaluate(u, v);
+        let mut o = OffsetSample {
             position: s.position - value,
-            du: (s.du - du) * scale,
-            dv: (s.dv - dv) * scale,
-            surface,
-        })
+            du: s.du - du,
+            dv: s.dv - dv,
+            surface: s,
+        };
+        if scale != 1.0 {
+            for d in [&mut o.du, &mut o.dv, &mut o.surface.du, &mut o.surface.dv] {
+                *d *= scale;
+            }
+        }
+        Ok(o)
     }
 
     /// The refined face, its `(u, v)` and the derivative factor of Ptex point
     /// `(face, u, v)` of the input mesh.
+    #[inline]
     pub fn locate(&self, face: u32, u: f64, v: f64) -> Result<(u32, f64, f64, f64)> {
         if self.settings.level == 0 {
             return Ok((face, u, v, 1.0));
@@ -293,6 +328,7 @@ impl OffsetSurface {
     /// here ([`OffsetSample::folds`]).
     ///
     /// Errors ([`Error::InvalidArgument`]): as [`Evaluator::evaluate`].
+    #[inline]
     pub fn evaluate(&self, face: u32, u: f64, v: f64) -> Result<OffsetSample> {
         if !(0.0..=1.0).contains(&u) || !(0.0..=1.0).contains(&v) {
             return Err(Error::invalid_argument(format!(
@@ -300,15 +336,17 @@ impl OffsetSurface {
             )));
         }
         let (g, s, t, scale) = self.locate(face, u, v)?;
-        self.evaluate_fine(g, s, t, scale)
+        self.sample(g, s, t, scale)
     }
 
     /// The offset at many points given in `domain` (derivatives in its units), `None` where
-    /// there is no limit surface. With `accept_folds` false in the settings a point where the
-    /// offset folds is an error naming it.
+    /// there is no limit surface ([`OffsetSurface::evaluate_in`] at each point), on the
+    /// evaluator's threads ([`OffsetSurface::set_threads`]; the result does not depend on
+    /// them, bit for bit).
     ///
-    /// Errors ([`Error::InvalidArgument`]): lists of different lengths, a bad point (naming
-    /// its index), a folded point.
+    /// Errors: lists of different lengths ([`Error::InvalidArgument`]); the error of the
+    /// lowest failing point, an [`Error::InvalidArgument`] prefixed by `point {i}: ` (a bad
+    /// point, a fold), other kinds unchanged.
     pub fn evaluate_points(
         &self,
         domain: Domain,
@@ -316,38 +354,48 @@ impl OffsetSurface {
         u: &[f64],
         v: &[f64],
     ) -> Result<Vec<Option<OffsetSample>>> {
-        crate::eval::evaluator::check_point_lists(faces, u, v)?;
-        let point = |i: usize, m: String| Error::InvalidArgument(format!("point {i}: {m}"));
-        let mut out = Vec::with_capacity(faces.len());
-        for i in 0..faces.len() {
-            let p = self
-                .ptex
-                .locate_in(domain, faces[i], u[i], v[i])
-                .map_err(|e| point(i, e.to_string()))?;
-            if !self.fine.has_surface(self.locate(p.face, p.u, p.v)?.0) {
-                out.push(None);
-                continue;
-            }
-            let mut o = self
-                .evaluate(p.face, p.u, p.v)
-                .map_err(|e| point(i, e.to_string()))?;
-            if !self.settings.accept_folds && o.folds() {
-                return Err(point(
-                    i,
-                    fold_message(
-                        &format!("face {}", faces[i]),
-                        u[i],
-                        v[i],
-                        self.settings.thickness,
-                    ),
-                ));
-            }
-            for d in [&mut o.du, &mut o.dv, &mut o.surface.du, &mut o.surface.dv] {
-                *d *= p.derivative_scale;
-            }
-            out.push(Some(o));
+        each_point(faces, u, v, self.fine.threads(), |f, u, v| {
+            self.evaluate_in(domain, f, u, v)
+        })
+    }
+
+    /// The offset at `(face, u, v)` given in `domain` (derivatives in its units), `None`
+    /// where there is no limit surface. With `accept_folds` false in the settings a point
+    /// where the offset folds is an error naming it.
+    ///
+    /// Errors ([`Error::InvalidArgument`]): a bad point (as [`Evaluator::evaluate_in`]); a
+    /// folded point. [`Error::NumericalFailure`] as [`Evaluator::evaluate`].
+    pub fn evaluate_in(
+        &self,
+        domain: Domain,
+        face: u32,
+        u: f64,
+        v: f64,
+    ) -> Result<Option<OffsetSample>> {
+        let p = self.ptex.locate_in(domain, face, u, v)?;
+        let (g, s, t, scale) = self.locate(p.face, p.u, p.v)?;
+        if !self.fine.has_surface(g) {
+            return Ok(None);
         }
-        Ok(out)
+        let mut o = self.sample(g, s, t, scale)?;
+        if !self.settings.accept_folds && o.folds() {
+            return Err(Error::invalid_argument(fold_message(
+                &format!("face {face}"),
+                u,
+                v,
+                self.settings.thickness,
+            )));
+        }
+        for d in [&mut o.du, &mut o.dv, &mut o.surface.du, &mut o.surface.dv] {
+            *d *= p.derivative_scale;
+        }
+        Ok(Some(o))
+    }
+
+    /// Set how many threads batches of points ([`OffsetSurface::evaluate_points`]) run on:
+    /// 0 (the default) for all cores, as [`Evaluator::set_threads`].
+    pub fn set_threads(&mut self, threads: usize) {
+        self.fine.set_threads(threads);
     }
 
     /// Fail at the first refined face whose offset folds on its fold lattice.

@@ -187,10 +187,11 @@ pub fn measure(offset: &OffsetSurface, n: usize) -> Result<ThicknessReport> {
 /// The offset at the lowest crust level from `settings.level` on whose thickness is within
 /// `tolerance` of `c` at every sample of [`TOLERANCE_LATTICE`], with its report.
 ///
-/// Errors ([`Error::InvalidArgument`]): a tolerance that is not finite and > 0; no level up
-/// to [`MAX_LEVEL`] meets it (the message gives the best reached, e.g. a crease whose
-/// mitered offset is farther than `c + tolerance` from the other side); the errors of
-/// [`OffsetSurface::new`].
+/// Errors: [`Error::InvalidArgument`] for a tolerance that is not finite and > 0;
+/// [`Error::NumericalFailure`] when no level up to [`MAX_LEVEL`] (or [`MAX_FINE_FACES`])
+/// meets it, the message giving the error reached at each level and, where a finer crust
+/// folds, the fold error naming the face and the crease or corner vertex next to it; the
+/// errors of [`OffsetSurface::new`] at the first level.
 pub fn offset_within(
     mesh: &Mesh,
     options: &SubdivOptions,
@@ -224,7 +225,7 @@ pub fn offset_within(
             break;
         }
     }
-    Err(Error::invalid_argument(format!(
+    Err(Error::NumericalFailure(format!(
         "no crust level keeps the thickness within {tolerance} of {}: largest error {}",
         settings.thickness,
         reached.join(", ")

@@ -198,3 +198,84 @@ fn curve_points_and_the_memory_budget_are_refused_before_allocating() {
         t.elapsed()
     );
 }
+
+/// Every construction's sizes above their ceilings (`MAX_SAMPLES` per direction,
+/// `MAX_SAMPLE_PRODUCT` together, a blend's GBS level, a shell's crust level): refused with
+/// `InvalidArgument` naming the size, before sampling (a 10^5 × 10^5 request would need
+/// terabytes; the time printed, not asserted).
+#[test]
+fn every_construction_refuses_sizes_above_its_ceilings() {
+    use profsubd::construct::blend::{self, BlendInput};
+    use profsubd::construct::settings::parse_json;
+    use profsubd::construct::shell::{self, OffsetSettings, ShellInput};
+    use profsubd::construct::{curves, profile, revolve, sweep};
+    use profsubd::{CurvesInput, Fitted, ProfileInput, RevolveInput, Settings, SweepInput};
+    use std::path::Path;
+
+    let example = |p: &str| {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("examples")
+            .join(p);
+        (std::fs::read_to_string(&path).unwrap(), path)
+    };
+    let huge = 100_000;
+    let refused = |what: &str, result: Result<Fitted, Error>, words: &str| match result {
+        Err(Error::InvalidArgument(m)) => assert!(m.contains(words), "{what}: {m}"),
+        other => panic!("{what}: {:?}", other.map(|f| f.fit)),
+    };
+    let t = std::time::Instant::now();
+    let (text, path) = example("profiles/bottle.json");
+    let (mut i, s) = ProfileInput::from_json(&text, &path).unwrap();
+    i.along = huge;
+    refused(
+        "profile",
+        profile::build(&i, &s),
+        "along = 100000 must be between 1 and 4096",
+    );
+    (i.along, i.around) = (4096, 4096);
+    refused(
+        "profile",
+        profile::build(&i, &s),
+        "4096 × 4096 exceeds 4000000",
+    );
+    let (text, path) = example("sweeps/wine_glass.json");
+    let (mut i, s) = RevolveInput::from_json(&text, &path).unwrap();
+    (i.samples_profile, i.samples_around) = (huge as usize, huge as usize);
+    refused(
+        "revolve",
+        revolve::build(&i, &s),
+        "samples_profile = 100000",
+    );
+    let (text, path) = example("sweeps/handrail.json");
+    let (mut i, s) = SweepInput::from_json(&text, &path).unwrap();
+    i.samples_trajectory = huge as usize;
+    refused("sweep", sweep::build(&i, &s), "samples_trajectory = 100000");
+    let (text, path) = example("curves/bonnet.json");
+    let (mut i, s) = CurvesInput::from_json(&text, &path).unwrap();
+    i.samples = [2000, 2001];
+    refused("curves", curves::build(&i, &s), "samples = [2000, 2001]");
+    let (text, path) = example("blends/tee.json");
+    let (mut i, s): (BlendInput, Settings) = parse_json(&text, &path).unwrap();
+    i.gbs_level = 1000;
+    refused("blend", blend::build(&i, &s), "gbs_level 1000 is outside");
+    let mesh =
+        read_obj_file(&Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/profiles/vase.obj"))
+            .unwrap()
+            .mesh;
+    let mut offset = OffsetSettings::new(0.01);
+    offset.level = 1000;
+    let input = ShellInput {
+        mesh,
+        offset,
+        tolerance: None,
+    };
+    refused(
+        "shell",
+        shell::build(&input, &Settings::default()),
+        "crust level 1000 is above the maximum 6",
+    );
+    println!(
+        "six constructions' absurd sizes refused in {:?}",
+        t.elapsed()
+    );
+}

@@ -580,8 +580,9 @@ impl<'a> From<&'a StencilTable> for CsrRef<'a> {
 /// solve showed, a lower estimate of the stencil matrix's condition number. Everything in
 /// it is a ratio of lengths, unchanged by translation, rotation and uniform scaling.
 ///
-/// `control` is polled while the stencils are built (0–30 %) and while solving (30–100 %),
-/// and its memory budget checked before the stencils are built.
+/// `control` is polled after the spacing check, while the stencils are built (0–29 %) and
+/// the system assembled (29–30 %) and while solving (30–100 %), and its memory budget
+/// checked before the stencils are built.
 ///
 /// Errors: [`Error::InvalidArgument`] if the target count differs from the vertex count;
 /// [`Error::NumericalFailure`] if the stencil matrix is singular or the tolerance is missed
@@ -629,14 +630,18 @@ pub fn fit_limit(
     if geometric.is_nan() || geometric > MAX_CONDITION {
         return Err(refuse(geometric));
     }
-    let limit = limit_stencils_with(mesh, options, &control.stage(0.0, 0.3))?;
+    // The spacing check above is a pass over every edge: a poll before the stencils.
+    control.report(0.0)?;
+    let limit = limit_stencils_with(mesh, options, &control.stage(0.0, 0.29))?;
     let role = |i: usize| roles.get(i).copied().unwrap_or_default();
     let umbrella = roles
         .contains(&Role::Fair)
         .then(|| bending::Umbrella::new(mesh));
     let mut system = StencilTable::new();
     let mut rhs = targets.to_vec();
+    let assembly = control.stage(0.29, 0.3);
     for (i, rhs) in rhs.iter_mut().enumerate() {
+        assembly.step(i, targets.len())?;
         let (a, b) = (limit.offsets[i] as usize, limit.offsets[i + 1] as usize);
         match (role(i), &umbrella) {
             // A kept vertex's row is the identity: it keeps its position as control point.
@@ -705,9 +710,13 @@ pub fn fit_limit(
             Role::Keep | Role::Fair => limits[i],
         })
         .collect();
-    let mut parts = mesh.parts().clone();
-    parts.positions = x;
-    Ok((Mesh::from_parts(parts)?, reached, report))
+    if let Some(i) = x.iter().position(|p| !p.is_finite()) {
+        return Err(Error::NumericalFailure(format!(
+            "the fit gave vertex {i} a non-finite control point"
+        )));
+    }
+    // Only the positions change: the topology and tags were validated with `mesh`.
+    Ok((mesh.with_positions(&x), reached, report))
 }
 
 /// Estimated bytes a fit of `vertices` vertices and `face_indices` face-vertex indices

@@ -49,6 +49,7 @@ use crate::construct::fitted::Fitted;
 use crate::construct::grid_mesh::{grid_mesh_coords, GridEnd, SweepGrid};
 use crate::construct::pole_cap::{cap_depths, grid_cap_depth};
 use crate::construct::settings::{Caps, Settings};
+use crate::curves::CurveSample;
 use crate::error::{Error, Result};
 use crate::fit::Role;
 use crate::mesh::MeshParts;
@@ -74,7 +75,7 @@ impl RevolveInput {
     /// of 4 with a smooth pole or odd with a tip, too few profile intervals to leave two
     /// rings between two poles.
     pub fn grid(&self, settings: &Settings, profile: &RevolvedProfile) -> Result<SweepGrid> {
-        Ok(self.rings(settings, profile)?.0)
+        Ok(self.rings(settings, profile, None)?.0 .0)
     }
 
     /// Quad mesh parts of the revolution, each vertex at its data point (the fitter's input):
@@ -87,15 +88,22 @@ impl RevolveInput {
     /// [`RevolveInput::mesh_parts`] and the design surface (the surface of revolution of the
     /// profile curve) on every face's lattice ([`crate::construct::design`]).
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
-        let (parts, lattice, _) = self.layout(settings)?;
+        let (parts, lattice, _) = self.layout(settings, None)?.0;
         Ok((parts, lattice))
     }
 
     /// [`RevolveInput::cage`], and which vertices are free of data (the flat meridian caps'
-    /// inside and axis, [`wedge`]): the fit keeps them as control points.
-    fn layout(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice, Vec<Role>)> {
+    /// inside and axis, [`wedge`]): the fit keeps them as control points. `pole_room`: a
+    /// partial turn's pole sectors get room ([`widen_pole_runs`]); the `bool`: whether that
+    /// changed the rings.
+    #[allow(clippy::type_complexity)]
+    fn layout(
+        &self,
+        settings: &Settings,
+        pole_room: Option<usize>,
+    ) -> Result<((MeshParts, DesignLattice, Vec<Role>), bool)> {
         let profile = self.profile_curve(settings)?;
-        let (grid, ring_s) = self.rings(settings, &profile)?;
+        let ((grid, ring_s), widened) = self.rings(settings, &profile, pole_room)?;
         let design = RevolveDesign {
             profile: &profile,
             ring_s: &ring_s,
@@ -111,7 +119,7 @@ impl RevolveInput {
             wedge_parts(self, settings, &profile, &grid, &ring_s)?
         };
         let lattice = parts_lattice(&parts, &coords, &design, &settings.control)?;
-        Ok((parts, lattice, roles))
+        Ok(((parts, lattice, roles), widened))
     }
 
     /// Check the end kinds against the angle, the caps and `samples_around`.
@@ -160,12 +168,14 @@ impl RevolveInput {
         Ok(())
     }
 
-    /// The grid and the profile parameter of each ring.
+    /// The grid and the profile parameter of each ring; `pole_room`: on a partial turn, the
+    /// runs of pole sectors widened by [`widen_pole_runs`] (the `bool`: whether they were).
     fn rings(
         &self,
         settings: &Settings,
         profile: &RevolvedProfile,
-    ) -> Result<(SweepGrid, Vec<f64>)> {
+        pole_room: Option<usize>,
+    ) -> Result<((SweepGrid, Vec<f64>), bool)> {
         let mut ends = [profile.end(0), profile.end(1)];
         self.check_ends(settings.caps, &ends)?;
         let na = self.samples_around;
@@ -183,6 +193,14 @@ impl RevolveInput {
                 self.samples_profile
             )));
         }
+        let sector = |e: GridEnd| !self.full_turn() && matches!(e, GridEnd::Tip(_));
+        let mut widened = false;
+        if let (Some(want), false) = (pole_room, self.full_turn()) {
+            let poles = ends.map(|e| e != GridEnd::Open);
+            if let Some(wide) = widen_pole_runs(&samples, poles, want) {
+                (samples, widened) = (wide, true);
+            }
+        }
         place_samples(&mut samples, ends.map(|e| e == GridEnd::Smooth), |s| {
             profile.point(s)
         });
@@ -196,7 +214,6 @@ impl RevolveInput {
             .filter(|&i| i == 0 || i + 1 == samples.len() || samples[i].corner)
             .collect();
         let runs: Vec<usize> = breaks.windows(2).map(|w| w[1] - w[0]).collect();
-        let sector = |e: GridEnd| !self.full_turn() && matches!(e, GridEnd::Tip(_));
         let caps = cap_depths(
             ends.map(|e| e == GridEnd::Smooth || sector(e)),
             ends.map(|e| matches!(e, GridEnd::Tip(_)) && !sector(e)),
@@ -252,8 +269,67 @@ impl RevolveInput {
             ends,
             crease_sharpness: settings.crease_sharpness,
         };
-        Ok((grid, samples.iter().map(|c| c.s).collect()))
+        Ok(((grid, samples.iter().map(|c| c.s).collect()), widened))
     }
+}
+
+/// The samples with the runs (between breakpoints) at a pole (`poles`) given at least
+/// `want` intervals each, taken one at a time from the other run whose intervals are
+/// shortest in parameter (keeping one each), each run sampled uniformly in parameter as
+/// [`crate::curves::SpaceCurve::sample_range`] does; `None` if no run changes. A partial
+/// turn's pole sector has `k` radial intervals whatever the profile intervals it replaces;
+/// when its run has only one or two (a goblet's nearly flat lid at 16 x 8), the sector's
+/// `k` small cells meet one long profile interval, and the fit folded there even faired.
+/// With `k + 1` intervals the sector replaces `k` of them, and its cells are about as long
+/// as the side's next to it, as on the flat-based bottle that works.
+fn widen_pole_runs(
+    samples: &[CurveSample],
+    poles: [bool; 2],
+    want: usize,
+) -> Option<Vec<CurveSample>> {
+    let n = samples.len();
+    let breaks: Vec<usize> = (0..n)
+        .filter(|&i| i == 0 || i + 1 == n || samples[i].corner)
+        .collect();
+    let mut count: Vec<usize> = breaks.windows(2).map(|w| w[1] - w[0]).collect();
+    let runs = count.len();
+    if runs < 2 {
+        return None;
+    }
+    let length: Vec<f64> = breaks
+        .windows(2)
+        .map(|w| samples[w[1]].s - samples[w[0]].s)
+        .collect();
+    let pole_runs: Vec<usize> = [(0, poles[0]), (runs - 1, poles[1])]
+        .into_iter()
+        .filter_map(|(r, p)| p.then_some(r))
+        .collect();
+    let before = count.clone();
+    for &run in &pole_runs {
+        while count[run] < want {
+            let donor = (0..runs)
+                .filter(|d| !pole_runs.contains(d) && count[*d] > 1)
+                .min_by(|&a, &b| {
+                    (length[a] / count[a] as f64).total_cmp(&(length[b] / count[b] as f64))
+                });
+            let Some(d) = donor else { break };
+            count[d] -= 1;
+            count[run] += 1;
+        }
+    }
+    if count == before {
+        return None;
+    }
+    let mut out = Vec::with_capacity(n);
+    for (r, w) in breaks.windows(2).enumerate() {
+        let (s0, s1) = (samples[w[0]].s, samples[w[1]].s);
+        out.extend((0..count[r]).map(|j| CurveSample {
+            s: s0 + (s1 - s0) * j as f64 / count[r] as f64,
+            corner: j == 0 && samples[w[0]].corner,
+        }));
+    }
+    out.push(samples[n - 1]);
+    Some(out)
 }
 
 /// The surface of revolution in the design coordinates of [`grid_mesh_coords`]: ring index
@@ -308,14 +384,62 @@ impl Design for RevolveDesign<'_> {
 /// fold-free for every profile and sampling, [`wedge`]; checked by the fold check). A
 /// partial turn whose interpolating fit folds is fitted once more with its pole sectors'
 /// inner vertices faired instead of interpolated (those points are then not interpolated:
-/// `targets` holds their limit positions), and refused only if that folds too.
+/// `targets` holds their limit positions); if that folds too, or the first layout has no
+/// unfolded meridian cap, the same two fits are tried on the rings with the pole sectors'
+/// runs widened to `k / 2 + 1`, then `k + 1` profile intervals (`n = 4k` meridian
+/// intervals; `widen_pole_runs`), and the turn is refused only if every one folds. Turns
+/// whose first layout fits without folding are unchanged.
 pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
-    let (parts, design, roles) = input.layout(settings)?;
     if input.full_turn() {
+        let ((parts, design, roles), _) = input.layout(settings, None)?;
         return Fitted::fit_free(parts, settings, design, &roles);
     }
-    // Interpolate every data point first; only where that folds are the pole sectors'
-    // inner data points released and their control points faired ([`wedge`]).
+    // The rings as sampled first; only where that layout or its fit folds, the pole
+    // sectors' runs widened to `k / 2 + 1` intervals (the sector's `k` radial intervals
+    // over about 2 profile intervals, the ratio of a full turn's grid cap), then to `k + 1`
+    // ([`widen_pole_runs`]).
+    let k = input.samples_around / 4;
+    let mut outcome = None;
+    for room in [None, Some(k / 2 + 1), Some(k + 1)] {
+        let layout = match input.layout(settings, room) {
+            Ok((_, false)) if room.is_some() => continue,
+            Ok((layout, _)) => layout,
+            Err(e @ Error::InvalidArgument(_)) => {
+                outcome.get_or_insert(Err(e));
+                continue;
+            }
+            Err(e) => return Err(e),
+        };
+        let (parts, design, roles) = layout;
+        let fitted = fit_partial(parts, design, &roles, settings)?;
+        let folded = fitted.surface_report_with(&settings.control)?.folded_faces > 0;
+        if !folded || !matches!(outcome, Some(Ok(_))) {
+            outcome = Some(Ok(fitted));
+        }
+        if !folded {
+            break;
+        }
+    }
+    outcome
+        .expect("the first layout is always tried")?
+        .refuse_folds(
+            &format!(
+                "partial revolution ({}°, {} x {} samples)",
+                input.angle_deg, input.samples_around, input.samples_profile
+            ),
+            "other sample counts give other layouts",
+            &settings.control,
+        )
+}
+
+/// A partial turn's fit: every data point interpolated first; only where that folds are the
+/// pole sectors' inner data points released and their control points faired ([`wedge`]).
+fn fit_partial(
+    parts: MeshParts,
+    design: DesignLattice,
+    roles: &[Role],
+    settings: &Settings,
+) -> Result<Fitted> {
     let interpolating: Vec<Role> = roles
         .iter()
         .map(|&r| match r {
@@ -325,19 +449,11 @@ pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
         .collect();
     let first = Fitted::fit_free(parts.clone(), settings, design.clone(), &interpolating)?;
     let folded = first.surface_report_with(&settings.control)?.folded_faces;
-    let fitted = if folded == 0 || interpolating == roles {
-        first
+    if folded == 0 || interpolating == roles {
+        Ok(first)
     } else {
-        Fitted::fit_free(parts, settings, design, &roles)?
-    };
-    fitted.refuse_folds(
-        &format!(
-            "partial revolution ({}°, {} x {} samples)",
-            input.angle_deg, input.samples_around, input.samples_profile
-        ),
-        "other sample counts give other layouts",
-        &settings.control,
-    )
+        Fitted::fit_free(parts, settings, design, roles)
+    }
 }
 
 #[cfg(test)]
@@ -444,6 +560,34 @@ mod tests {
         open.corners = vec![0];
         let e = open.profile_curve(&D).unwrap_err();
         assert!(matches!(e, Error::InvalidArgument(m) if m.contains("corner 0")));
+    }
+
+    #[test]
+    fn pole_runs_are_widened_from_the_finest_other_run() {
+        let at = |s: f64, corner: bool| CurveSample { s, corner };
+        // Runs [0, 1] (1 interval, a pole), [1, 4] (3), [4, 5] (2), [5, 6] (1, a pole).
+        let samples = [
+            at(0.0, false),
+            at(1.0, true),
+            at(2.0, false),
+            at(3.0, false),
+            at(4.0, true),
+            at(4.5, false),
+            at(5.0, true),
+            at(6.0, false),
+        ];
+        let wide = widen_pole_runs(&samples, [true, true], 2).unwrap();
+        // The bottom pole's run takes one from [4, 5] (the shortest intervals, 0.5), the
+        // top's one from [1, 4] ([4, 5] is down to one interval).
+        let s: Vec<f64> = wide.iter().map(|c| c.s).collect();
+        assert_eq!(s, [0.0, 0.5, 1.0, 2.5, 4.0, 5.0, 5.5, 6.0]);
+        let corners: Vec<bool> = wide.iter().map(|c| c.corner).collect();
+        assert_eq!(
+            corners,
+            [false, false, true, false, true, true, false, false]
+        );
+        assert!(widen_pole_runs(&samples, [false, false], 2).is_none());
+        assert!(widen_pole_runs(&samples, [true, true], 1).is_none());
     }
 
     #[test]

@@ -46,9 +46,13 @@
 //! strictly rising and the rows nearly horizontal (a flat foot or a flat top, say). Interior vertices come from Coons
 //! interpolation in the `(r, z)` plane; of the layouts that do not fold the best-shaped is
 //! taken (the largest smallest sine of a quad's corner angle: a flat foot continuing the
-//! bottom radial line would otherwise leave slivers between it and the first rows), and a
-//! profile for which none exists (a hollow glass whose bowl and foot both reach the axis) is
-//! refused.
+//! bottom radial line would otherwise leave slivers between it and the first rows). Only if
+//! every Coons grid folds, each is relaxed towards the Winslow grid (`winslow_smooth`,
+//! whose inverse map is harmonic and so one-to-one on any simply connected region) until
+//! it no longer folds, and the first such is taken: a goblet's lid runs on into the top
+//! sector's radial line, so the grid's corner there spans a straight angle and its Coons
+//! interior tangles next to it. A profile for which no layout is found either (a hollow
+//! glass whose bowl and foot both reach the axis) is refused.
 //!
 //! Where the column turns towards the axis at a crease ring (a cup's foot, a neck), the cap
 //! spans a reflex angle at that corner; the grid line from it across the cap is then creased
@@ -336,7 +340,7 @@ impl Wedge {
         column: &[u32],
         bottom: &[u32],
         top: &[u32],
-        shared: &mut Option<(usize, Vec<u32>)>,
+        shared: &mut Option<(usize, bool, Vec<u32>)>,
     ) -> Result<()> {
         let rz = |w: &Wedge, v: u32| {
             let p = w.parts.positions[v as usize];
@@ -355,15 +359,15 @@ impl Wedge {
             )));
         }
         let (a, grid) = match shared {
-            Some((a, axis)) => {
+            Some((a, smooth, axis)) => {
                 let u = axis
                     .iter()
                     .map(|&v| (self.parts.positions[v as usize].z - z0) / (z1 - z0))
                     .collect();
-                (*a, plane.grid(*a, u)?)
+                (*a, plane.grid(*a, u, *smooth)?)
             }
             None => {
-                let (a, grid) = plane.choose()?;
+                let (a, smooth, grid) = plane.choose()?;
                 let axis: Vec<u32> = grid[0]
                     .iter()
                     .enumerate()
@@ -373,11 +377,11 @@ impl Wedge {
                         _ => self.add_vertex(DVec3::new(0.0, 0.0, p.y), DesignCoord::Planar),
                     })
                     .collect();
-                *shared = Some((a, axis));
+                *shared = Some((a, smooth, axis));
                 (a, grid)
             }
         };
-        let axis = &shared.as_ref().expect("set above").1;
+        let axis = &shared.as_ref().expect("set above").2;
         let (n1, n2) = (grid.len() - 1, grid[0].len() - 1);
         let (k, rows) = (bottom.len() - 1, column.len() - 1);
         let mut ids = vec![vec![0u32; n2 + 1]; n1 + 1];
@@ -507,8 +511,10 @@ struct MeridianPlane {
 impl MeridianPlane {
     /// The best-shaped unfolded layout ([`min_corner_sine`]): split `a = 0, 1, ...` (at most [`MAX_SPLITS`] values,
     /// evenly spread, so that a refusal stays cheap), and for each the axis spacings of
-    /// [`MeridianPlane::axis_spacings`].
-    fn choose(&self) -> Result<(usize, Vec<Vec<DVec2>>)> {
+    /// [`MeridianPlane::axis_spacings`]; the Coons grids first, and only if every one of
+    /// them folds, the first of the same layouts that folds no longer after
+    /// [`winslow_smooth`] (the `bool`: whether the grid was smoothed).
+    fn choose(&self) -> Result<(usize, bool, Vec<Vec<DVec2>>)> {
         let rows = self.column.len() - 1;
         let last = (rows - 1) / 2;
         let splits: Vec<usize> = if last < MAX_SPLITS {
@@ -518,9 +524,9 @@ impl MeridianPlane {
         };
         let mut first_error = None;
         let mut best: Option<(f64, usize, Vec<Vec<DVec2>>)> = None;
-        for a in splits {
+        for &a in &splits {
             for u in self.axis_spacings(a) {
-                match self.grid(a, u) {
+                match self.grid(a, u, false) {
                     Ok(grid) => {
                         let q = min_corner_sine(&grid);
                         if best.as_ref().map_or(true, |b| q > b.0) {
@@ -533,10 +539,17 @@ impl MeridianPlane {
                 }
             }
         }
-        match best {
-            Some((_, a, grid)) => Ok((a, grid)),
-            None => Err(first_error.expect("at least one layout is tried")),
+        if let Some((_, a, grid)) = best {
+            return Ok((a, false, grid));
         }
+        for &a in &splits {
+            for u in self.axis_spacings(a) {
+                if let Ok(grid) = self.grid(a, u, true) {
+                    return Ok((a, true, grid));
+                }
+            }
+        }
+        Err(first_error.expect("at least one layout is tried"))
     }
 
     /// Candidate axis spacings (fractions from the bottom apex to the top apex) for split
@@ -576,8 +589,8 @@ impl MeridianPlane {
     /// `x[i][0]` runs from the bottom apex along the bottom radial line and up the column to
     /// `column[a]`, `x[i][n2]` from the top apex along the top radial line and down the column
     /// to `column[rows − a]`, `x[0][j]` up the axis, `x[n1][j]` along `column[a..=rows − a]`.
-    /// Errors if it folds.
-    fn grid(&self, a: usize, u: Vec<f64>) -> Result<Vec<Vec<DVec2>>> {
+    /// `smooth`: the Coons grid's inside relaxed by [`winslow_smooth`]. Errors if it folds.
+    fn grid(&self, a: usize, u: Vec<f64>, smooth: bool) -> Result<Vec<Vec<DVec2>>> {
         let (k, rows) = (self.bottom.len() - 1, self.column.len() - 1);
         let (z0, z1) = (self.bottom[0].y, self.top[0].y);
         let side = |radial: &[DVec2], down: bool| -> Vec<DVec2> {
@@ -590,7 +603,7 @@ impl MeridianPlane {
             .map(|&f| DVec2::new(0.0, z0 + f * (z1 - z0)))
             .collect();
         let mid = &self.column[a..=rows - a];
-        let grid = coons(
+        let mut grid = coons(
             &side(&self.bottom, false),
             &side(&self.top, true),
             &axis,
@@ -598,8 +611,60 @@ impl MeridianPlane {
             &uniform(k + a),
             &u,
         );
+        if smooth {
+            winslow_smooth(&mut grid, |g| check_unfolded(g).is_ok());
+        }
         check_unfolded(&grid)?;
         Ok(grid)
+    }
+}
+
+/// Most Gauss-Seidel sweeps of [`winslow_smooth`].
+const WINSLOW_SWEEPS: usize = 4000;
+
+/// Relax the inside of the structured grid `x[i][j]` (its boundary fixed) towards the
+/// discrete Winslow grid: the one whose grid indices are harmonic functions of the plane
+/// (the inverse of a harmonic map, the elliptic grid generation of Winslow 1967 and
+/// Thompson, Warsi & Mastin). A harmonic map *onto* a non-convex region may fold; its
+/// inverse is one-to-one for any simply connected region (Radó-Kneser-Choquet applied to
+/// the convex parameter rectangle), which is why a Coons grid that folds next to a
+/// straight-angle grid corner (a goblet's lid running on into the top sector's radial
+/// line) is untangled here. The discrete grid is not guaranteed unfolded: the caller
+/// checks it ([`check_unfolded`]). Sweeps stop as soon as `done` holds for the grid (the
+/// caller's unfolded check: the Coons grid changes no more than it must), when no vertex
+/// moves by more than 1e-12 of the grid's extent, or after [`WINSLOW_SWEEPS`];
+/// deterministic.
+fn winslow_smooth(x: &mut [Vec<DVec2>], done: impl Fn(&[Vec<DVec2>]) -> bool) {
+    let (a, b) = (x.len() - 1, x[0].len() - 1);
+    if a < 2 || b < 2 {
+        return;
+    }
+    let extent = x.iter().flatten().fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(lo, hi), p| (lo.min(*p), hi.max(*p)),
+    );
+    let tolerance = 1e-12 * (extent.1 - extent.0).length();
+    for _ in 0..WINSLOW_SWEEPS {
+        let mut moved = 0.0f64;
+        for i in 1..a {
+            for j in 1..b {
+                let xi = 0.5 * (x[i + 1][j] - x[i - 1][j]);
+                let eta = 0.5 * (x[i][j + 1] - x[i][j - 1]);
+                let (alpha, beta, gamma) = (eta.length_squared(), xi.dot(eta), xi.length_squared());
+                let cross = x[i + 1][j + 1] - x[i + 1][j - 1] - x[i - 1][j + 1] + x[i - 1][j - 1];
+                let sum = alpha * (x[i + 1][j] + x[i - 1][j]) + gamma * (x[i][j + 1] + x[i][j - 1])
+                    - 0.5 * beta * cross;
+                let weight = 2.0 * (alpha + gamma);
+                if weight > 0.0 {
+                    let p = sum / weight;
+                    moved = moved.max((p - x[i][j]).length());
+                    x[i][j] = p;
+                }
+            }
+        }
+        if moved <= tolerance || done(x) {
+            break;
+        }
     }
 }
 

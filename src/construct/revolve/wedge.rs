@@ -75,7 +75,7 @@ use std::f64::consts::{PI, TAU};
 use glam::{DVec2, DVec3};
 
 use super::input::RevolveInput;
-use super::profile::{cap_point, revolve_point, RevolvedProfile};
+use super::profile::{cap_point, revolve_point, sector_point, RevolvedProfile};
 use crate::construct::design::DesignCoord;
 use crate::construct::grid_mesh::{grid_mesh_coords, GridEnd, SweepGrid};
 use crate::construct::settings::{Caps, Settings};
@@ -696,6 +696,7 @@ pub fn wedge_parts(
     profile: &RevolvedProfile,
     grid: &SweepGrid,
     ring_s: &[f64],
+    radial: &[Vec<f64>; 2],
 ) -> Result<(MeshParts, Vec<DesignCoord>, Vec<Role>)> {
     let capped = settings.caps == Caps::Flat;
     let rows = grid.rings.len();
@@ -730,9 +731,14 @@ pub fn wedge_parts(
                 w.sector(end, &ring_ids(i), angle, &flat, true)
             }
             GridEnd::Smooth | GridEnd::Tip(_) => {
-                let pole = profile.range()[end];
-                let on_surface =
-                    |rho: f64, theta: f64| cap_point(profile, s, pole, rho, theta / TAU);
+                let (params, pole) = (&radial[end], profile.range()[end]);
+                let on_surface = |rho: f64, theta: f64| {
+                    if params.is_empty() {
+                        cap_point(profile, s, pole, rho, theta / TAU)
+                    } else {
+                        sector_point(profile, params, rho, theta)
+                    }
+                };
                 let sector = w.sector(end, &ring_ids(i), angle, &on_surface, false);
                 tips.push(sector.apex);
                 faired.extend_from_slice(&sector.inner);

@@ -681,7 +681,9 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 }
 
 /// The mesh parts of a partial revolution: the side from `grid` (rings of
-/// `samples_around + 1` data points, `ring_s` their profile parameters), sectors at poles and
+/// `samples_around + 1` data points, `ring_s` their profile parameters), sectors at poles (their
+/// radial lines through `radial[end]`'s profile parameters by [`sector_point`], or evenly in
+/// the curve parameter where that is empty) and
 /// (with caps) at flat ends, and meridian caps (see the module documentation); and the
 /// vertices' design coordinates (sectors as caps, meridian caps planar), and what the fit
 /// asks of each vertex: a meridian cap's inside and axis keep their layout positions

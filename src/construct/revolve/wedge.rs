@@ -16,8 +16,10 @@
 //! angle (`square_polar`), so the radial steps are `1/k` of the radius everywhere, also at
 //! the quarter points (a Coons patch squeezed them to nothing there, next to the ring's long
 //! cells, and the interpolating fit folded). A flat cap scales ρ by the ring's radius in the
-//! ring's plane, a pole maps `(ρ, θ)` onto the surface through [`cap_point`] (the same
-//! placement as a full turn's pole cap), and replaces up to `k` profile intervals (its
+//! ring's plane, a pole maps `(ρ, θ)` onto the surface through [`sector_point`] (ρ along
+//! the profile samples it replaces, so radial steps continue the side's ring spacing; where
+//! the meridian caps would fold with those, evenly by [`cap_point`], the placement of a
+//! full turn's pole cap), and replaces up to `k` profile intervals (its
 //! radial lines have `k` intervals; see `RevolveInput::grid`), so that its cells are about as
 //! large as the side's faces. A pole's apex is an infinitely sharp corner: the two boundary
 //! meridians meet there at the wedge angle, and with caps three creases meet there.

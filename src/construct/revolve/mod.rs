@@ -54,8 +54,21 @@ use crate::error::{Error, Result};
 use crate::fit::Role;
 use crate::mesh::MeshParts;
 pub use input::RevolveInput;
-pub use profile::{cap_point, revolve_point, RevolvedProfile};
+pub use profile::{cap_point, revolve_point, sector_point, RevolvedProfile};
 use wedge::wedge_parts;
+
+/// What [`RevolveInput::rings`] lays out along the profile.
+struct Rings {
+    /// The rings of data points (poles excluded).
+    grid: SweepGrid,
+    /// The profile parameter of each ring.
+    ring_s: Vec<f64>,
+    /// Each end's pole-sector radial samples, from the pole outwards (empty: none, or a
+    /// full turn).
+    radial: [Vec<f64>; 2],
+    /// Whether the pole sectors' runs were widened ([`widen_pole_runs`]).
+    widened: bool,
+}
 
 impl RevolveInput {
     /// Validate and interpolate the profile.
@@ -75,7 +88,7 @@ impl RevolveInput {
     /// of 4 with a smooth pole or odd with a tip, too few profile intervals to leave two
     /// rings between two poles.
     pub fn grid(&self, settings: &Settings, profile: &RevolvedProfile) -> Result<SweepGrid> {
-        Ok(self.rings(settings, profile, None)?.0 .0)
+        Ok(self.rings(settings, profile, None)?.grid)
     }
 
     /// Quad mesh parts of the revolution, each vertex at its data point (the fitter's input):
@@ -103,23 +116,46 @@ impl RevolveInput {
         pole_room: Option<usize>,
     ) -> Result<((MeshParts, DesignLattice, Vec<Role>), bool)> {
         let profile = self.profile_curve(settings)?;
-        let ((grid, ring_s), widened) = self.rings(settings, &profile, pole_room)?;
+        let rings = self.rings(settings, &profile, pole_room)?;
+        let (grid, ring_s, radial) = (&rings.grid, &rings.ring_s, &rings.radial);
+        let layout = match self.layout_with(settings, &profile, grid, ring_s, radial) {
+            // The meridian caps' layout depends on the sectors' radial lines: where it folds
+            // with the side's spacing, the sectors spread evenly in the curve parameter.
+            Err(Error::InvalidArgument(_)) if radial.iter().any(|r| !r.is_empty()) => {
+                self.layout_with(settings, &profile, grid, ring_s, &Default::default())
+            }
+            result => result,
+        }?;
+        Ok((layout, rings.widened))
+    }
+
+    /// [`RevolveInput::layout`] with the pole sectors' radial samples `radial` (empty: evenly
+    /// in the curve parameter, [`cap_point`]; a full turn has none).
+    fn layout_with(
+        &self,
+        settings: &Settings,
+        profile: &RevolvedProfile,
+        grid: &SweepGrid,
+        ring_s: &[f64],
+        radial: &[Vec<f64>; 2],
+    ) -> Result<(MeshParts, DesignLattice, Vec<Role>)> {
         let design = RevolveDesign {
-            profile: &profile,
-            ring_s: &ring_s,
+            profile,
+            ring_s,
+            radial,
             ends: grid.ends,
             step: self.angle_deg.to_radians() / self.samples_around as f64,
             period: self.full_turn().then_some(self.samples_around as f64),
         };
         let (parts, coords, roles) = if self.full_turn() {
             let (parts, coords) =
-                grid_mesh_coords(&grid, &|end, v| design.cap(end, v.radius, TAU * v.turn))?;
+                grid_mesh_coords(grid, &|end, v| design.cap(end, v.radius, TAU * v.turn))?;
             (parts, coords, Vec::new())
         } else {
-            wedge_parts(self, settings, &profile, &grid, &ring_s)?
+            wedge_parts(self, settings, profile, grid, ring_s, radial)?
         };
         let lattice = parts_lattice(&parts, &coords, &design, &settings.control)?;
-        Ok(((parts, lattice, roles), widened))
+        Ok((parts, lattice, roles))
     }
 
     /// Check the end kinds against the angle, the caps and `samples_around`.
@@ -168,14 +204,15 @@ impl RevolveInput {
         Ok(())
     }
 
-    /// The grid and the profile parameter of each ring; `pole_room`: on a partial turn, the
-    /// runs of pole sectors widened by [`widen_pole_runs`] (the `bool`: whether they were).
+    /// The grid, the profile parameter of each ring and the pole sectors' radial samples;
+    /// `pole_room`: on a partial turn, the runs of pole sectors widened by
+    /// [`widen_pole_runs`].
     fn rings(
         &self,
         settings: &Settings,
         profile: &RevolvedProfile,
         pole_room: Option<usize>,
-    ) -> Result<((SweepGrid, Vec<f64>), bool)> {
+    ) -> Result<Rings> {
         let mut ends = [profile.end(0), profile.end(1)];
         self.check_ends(settings.caps, &ends)?;
         let na = self.samples_around;
@@ -229,6 +266,22 @@ impl RevolveInput {
                 depth[e] = caps[e];
             }
         }
+        let last = samples.len() - 1;
+        let radial = [0, 1].map(|e| {
+            if self.full_turn() || !(ends[e] == GridEnd::Smooth || sector(ends[e])) {
+                return Vec::new();
+            }
+            let span = if e == 0 {
+                0..=depth[0]
+            } else {
+                last - depth[1]..=last
+            };
+            let mut s: Vec<f64> = samples[span].iter().map(|c| c.s).collect();
+            if e == 1 {
+                s.reverse();
+            }
+            s
+        });
         samples.truncate(samples.len() - depth[1]);
         samples.drain(..depth[0]);
         let (count, closed) = if self.full_turn() {
@@ -269,7 +322,12 @@ impl RevolveInput {
             ends,
             crease_sharpness: settings.crease_sharpness,
         };
-        Ok(((grid, samples.iter().map(|c| c.s).collect()), widened))
+        Ok(Rings {
+            grid,
+            ring_s: samples.iter().map(|c| c.s).collect(),
+            radial,
+            widened,
+        })
     }
 }
 
@@ -339,6 +397,9 @@ fn widen_pole_runs(
 struct RevolveDesign<'a> {
     profile: &'a RevolvedProfile,
     ring_s: &'a [f64],
+    /// A partial turn's sector ends: the profile parameters of the samples its radial lines
+    /// replace, pole first ([`sector_point`]); empty otherwise.
+    radial: &'a [Vec<f64>; 2],
     ends: [GridEnd; 2],
     step: f64,
     /// Meridian intervals of a full turn.
@@ -367,6 +428,9 @@ impl Design for RevolveDesign<'_> {
         if self.ends[end] == GridEnd::Flat {
             let p = self.profile.point(ring);
             return revolve_point(DVec2::new(rho * p.x, p.y), theta);
+        }
+        if !self.radial[end].is_empty() {
+            return sector_point(self.profile, &self.radial[end], rho, theta);
         }
         let pole = self.profile.range()[end];
         cap_point(self.profile, ring, pole, rho, theta / TAU)

@@ -16,8 +16,10 @@
 //! angle (`square_polar`), so the radial steps are `1/k` of the radius everywhere, also at
 //! the quarter points (a Coons patch squeezed them to nothing there, next to the ring's long
 //! cells, and the interpolating fit folded). A flat cap scales ρ by the ring's radius in the
-//! ring's plane, a pole maps `(ρ, θ)` onto the surface through [`cap_point`] (the same
-//! placement as a full turn's pole cap), and replaces up to `k` profile intervals (its
+//! ring's plane, a pole maps `(ρ, θ)` onto the surface through [`sector_point`] (ρ along
+//! the profile samples it replaces, so radial steps continue the side's ring spacing; where
+//! the meridian caps would fold with those, evenly by [`cap_point`], the placement of a
+//! full turn's pole cap), and replaces up to `k` profile intervals (its
 //! radial lines have `k` intervals; see `RevolveInput::grid`), so that its cells are about as
 //! large as the side's faces. A pole's apex is an infinitely sharp corner: the two boundary
 //! meridians meet there at the wedge angle, and with caps three creases meet there.
@@ -79,7 +81,7 @@ use std::f64::consts::{PI, TAU};
 use glam::{DVec2, DVec3};
 
 use super::input::RevolveInput;
-use super::profile::{cap_point, revolve_point, RevolvedProfile};
+use super::profile::{cap_point, revolve_point, sector_point, RevolvedProfile};
 use crate::construct::design::DesignCoord;
 use crate::construct::grid_mesh::{grid_mesh_coords, GridEnd, SweepGrid};
 use crate::construct::settings::{Caps, Settings};
@@ -746,7 +748,9 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 }
 
 /// The mesh parts of a partial revolution: the side from `grid` (rings of
-/// `samples_around + 1` data points, `ring_s` their profile parameters), sectors at poles and
+/// `samples_around + 1` data points, `ring_s` their profile parameters), sectors at poles (their
+/// radial lines through `radial[end]`'s profile parameters by [`sector_point`], or evenly in
+/// the curve parameter where that is empty) and
 /// (with caps) at flat ends, and meridian caps (see the module documentation); and the
 /// vertices' design coordinates (sectors as caps, meridian caps planar), and what the fit
 /// asks of each vertex: a meridian cap's inside and axis keep their layout positions
@@ -761,6 +765,7 @@ pub fn wedge_parts(
     profile: &RevolvedProfile,
     grid: &SweepGrid,
     ring_s: &[f64],
+    radial: &[Vec<f64>; 2],
 ) -> Result<(MeshParts, Vec<DesignCoord>, Vec<Role>)> {
     let capped = settings.caps == Caps::Flat;
     let rows = grid.rings.len();
@@ -795,9 +800,14 @@ pub fn wedge_parts(
                 w.sector(end, &ring_ids(i), angle, &flat, true)
             }
             GridEnd::Smooth | GridEnd::Tip(_) => {
-                let pole = profile.range()[end];
-                let on_surface =
-                    |rho: f64, theta: f64| cap_point(profile, s, pole, rho, theta / TAU);
+                let (params, pole) = (&radial[end], profile.range()[end]);
+                let on_surface = |rho: f64, theta: f64| {
+                    if params.is_empty() {
+                        cap_point(profile, s, pole, rho, theta / TAU)
+                    } else {
+                        sector_point(profile, params, rho, theta)
+                    }
+                };
                 let sector = w.sector(end, &ring_ids(i), angle, &on_surface, false);
                 tips.push(sector.apex);
                 faired.extend_from_slice(&sector.inner);

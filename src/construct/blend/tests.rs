@@ -83,30 +83,49 @@ fn blends_are_oriented_manifolds_of_low_valence() {
                 let valence = |v: usize| level.valence(v);
                 let centres: Vec<usize> = b.centre_vertices().map(valence).collect();
                 let valleys: Vec<usize> = b.valley_vertices().map(valence).collect();
+                let apexes: Vec<usize> = b.apex_vertices().map(valence).collect();
                 assert_eq!(valleys.len(), n * ((columns - 1) / 2 + 1), "{what}");
-                // Centres 4 (3 under an odd ring's bottom vertices), valleys 3 or 4.
-                assert!(centres[..n].iter().all(|&x| x == 4), "{what}: {centres:?}");
+                // Centres 4 (3 under an odd ring's bottom vertices), one more on a fan's
+                // spokes; apexes ⌈N/2⌉; valleys 3 or 4.
+                let fan = n >= super::hub::FAN_FROM;
                 let bottom = if columns % 2 == 1 { 3 } else { 4 };
-                assert!(centres[n..].iter().all(|&x| x == bottom), "{what}");
+                for (i, &c) in centres.iter().enumerate() {
+                    let plain = if i < n { 4 } else { bottom };
+                    assert!(c == plain || (fan && c == plain + 1), "{what}: {centres:?}");
+                }
+                assert_eq!(apexes, vec![n.div_ceil(2); 2 * fan as usize], "{what}");
                 assert!(valleys.iter().all(|&x| x == 3 || x == 4), "{what}");
-                // Every hub vertex is one of those: no vertex joins all N pipes (N ≥ 5).
-                assert_eq!(b.valley_vertices().end, level.num_vertices());
+                // Every hub vertex is one of those.
+                assert_eq!(b.apex_vertices().end, level.num_vertices());
                 let max = (0..level.num_vertices()).map(valence).max();
                 assert_eq!(max, Some(5), "{what}");
                 let mut sizes: Vec<usize> = (0..level.num_faces())
                     .map(|f| level.face_vertices(f).len())
                     .collect();
-                sizes.dedup();
                 sizes.sort();
                 sizes.dedup();
-                // Quads, the two centre N-gons and (odd n) the pentagons.
-                let mut want = vec![4, n];
+                // Quads, the centre triangle (N odd) and (odd n) the pentagons.
+                let mut want = vec![4];
+                if n % 2 == 1 {
+                    want.push(3);
+                }
                 if columns % 2 == 1 {
                     want.push(5);
                 }
                 want.sort();
-                want.dedup();
                 assert_eq!(sizes, want, "{what}");
+                // No valence grows with N, at any level: at most 5 edges per vertex (even
+                // orders' quad split), at most 5 sides per face (odd orders' Doo–Sabin split,
+                // whose faces stand for vertices), so no vertex of valence N for N ≥ 6.
+                for levels in 1..=2 {
+                    let l = refine_gbs(&b.mesh, &input.gbs_options(), levels).unwrap().level;
+                    let most = if order % 2 == 0 {
+                        (0..l.num_vertices()).map(|v| l.valence(v)).max()
+                    } else {
+                        (0..l.num_faces()).map(|f| l.face_vertices(f).len()).max()
+                    };
+                    assert_eq!(most, Some(5), "{what} level {levels}");
+                }
                 let refined = refine_gbs(&b.mesh, &input.gbs_options(), 2).unwrap();
                 let l2 = &refined.level;
                 assert!((0..l2.num_edges()).all(|e| !l2.is_edge_non_manifold(e)));

@@ -79,7 +79,10 @@ fn reports_valences_and_none_is_the_pipe_count() {
             let most = list.iter().map(|&(v, _)| v).max().unwrap();
             // Valences do not grow with N: at most 5 (ring corners), so no vertex of
             // valence N for N ≥ 6.
-            assert!(most <= 5 && (pipes < 6 || most < pipes), "{name} {what}: {list:?}");
+            assert!(
+                most <= 5 && (pipes < 6 || most < pipes),
+                "{name} {what}: {list:?}"
+            );
         }
     }
 }

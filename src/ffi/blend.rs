@@ -130,8 +130,18 @@ mod tests {
         };
         refuse(&with(22, &[0.0]), 4, f64::NAN, "radius");
         refuse(&with(22, &[-0.5]), 4, f64::NAN, "radius");
-        refuse(&with(16, &[0.5, 2.0, 0.0, 1.0, 0.0, 0.0]), 4, f64::NAN, "parallel");
-        refuse(&with(16, &[2.0, 0.0, 0.0, 1.0, 1.0, 0.0]), 4, f64::NAN, "coincident");
+        refuse(
+            &with(16, &[0.5, 2.0, 0.0, 1.0, 0.0, 0.0]),
+            4,
+            f64::NAN,
+            "parallel",
+        );
+        refuse(
+            &with(16, &[2.0, 0.0, 0.0, 1.0, 1.0, 0.0]),
+            4,
+            f64::NAN,
+            "coincident",
+        );
         refuse(
             &with(16, &[2.0, 1.5, 0.0, 1.0, 0.2, 0.0]),
             4,

@@ -90,7 +90,13 @@ mod tests {
             (9, 1.0, 1, PROFSUBD_ERROR_INVALID_ARGUMENT, "order"),
             (4, -1.0, 1, PROFSUBD_ERROR_INVALID_ARGUMENT, "tension"),
             (4, f64::NAN, 1, PROFSUBD_ERROR_INVALID_ARGUMENT, "tension"),
-            (4, f64::INFINITY, 1, PROFSUBD_ERROR_INVALID_ARGUMENT, "tension"),
+            (
+                4,
+                f64::INFINITY,
+                1,
+                PROFSUBD_ERROR_INVALID_ARGUMENT,
+                "tension",
+            ),
             (4, 1.0, 9, PROFSUBD_ERROR_INVALID_ARGUMENT, "level"),
         ] {
             assert_eq!(call(mesh, order, tension, level, &mut out), status);

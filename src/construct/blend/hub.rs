@@ -277,7 +277,10 @@ pub fn control_mesh(input: &BlendInput) -> Result<BlendMesh> {
     }
     let apex = first_hub_vertex + (3 + s) * n;
     faces.extend(centre_faces(&(0..n).map(ct).collect::<Vec<_>>(), apex));
-    faces.extend(centre_faces(&(0..n).rev().map(cb).collect::<Vec<_>>(), apex + 1));
+    faces.extend(centre_faces(
+        &(0..n).rev().map(cb).collect::<Vec<_>>(),
+        apex + 1,
+    ));
     let mesh = Mesh::from_parts(MeshParts {
         positions,
         face_sizes: faces.iter().map(|f| f.len() as u32).collect(),

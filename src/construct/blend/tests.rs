@@ -118,7 +118,9 @@ fn blends_are_oriented_manifolds_of_low_valence() {
                 // orders' quad split), at most 5 sides per face (odd orders' Doo–Sabin split,
                 // whose faces stand for vertices), so no vertex of valence N for N ≥ 6.
                 for levels in 1..=2 {
-                    let l = refine_gbs(&b.mesh, &input.gbs_options(), levels).unwrap().level;
+                    let l = refine_gbs(&b.mesh, &input.gbs_options(), levels)
+                        .unwrap()
+                        .level;
                     let most = if order % 2 == 0 {
                         (0..l.num_vertices()).map(|v| l.valence(v)).max()
                     } else {
@@ -227,9 +229,14 @@ fn pipes_stay_exact_away_from_the_hub() {
 
 #[test]
 fn centre_and_valleys_move_monotonically() {
-    let pipes = star(5, 2.5);
+    for pipes in [3, 4, 5, 6].map(|n| star(n, 2.5)) {
+        centre_and_valleys_of(&pipes);
+    }
+}
+
+fn centre_and_valleys_of(pipes: &[Pipe]) {
     let steps = [0.0, 0.25, 0.5, 1.0, 2.0];
-    let heights = |order: u32, columns: usize| -> Vec<(f64, f64)> {
+    let heights = |order: u32, columns: usize| -> Vec<[f64; 4]> {
         steps
             .iter()
             .map(|&alpha| {
@@ -237,16 +244,16 @@ fn centre_and_valleys_move_monotonically() {
                     order,
                     columns,
                     alpha,
-                    ..BlendInput::new(pipes.clone())
+                    ..BlendInput::new(pipes.to_vec())
                 };
                 let b = control_mesh(&input).unwrap();
+                // A centre point and the apex (N ≥ 5; else the centre point again).
                 let c = b.centre_vertices().start;
+                let apex = b.apex_vertices().next().unwrap_or(c);
                 let refined = refine_gbs(&b.mesh, &input.gbs_options(), 3).unwrap();
                 // Even orders keep vertex v's descendant at index v (vertices first).
-                (
-                    b.mesh.positions()[c].dot(b.up),
-                    refined.positions[c].dot(b.up),
-                )
+                let (p0, p3) = (b.mesh.positions(), &refined.positions);
+                [p0[c], p3[c], p0[apex], p3[apex]].map(|p| p.dot(b.up))
             })
             .collect()
     };
@@ -258,7 +265,7 @@ fn centre_and_valleys_move_monotonically() {
                     order,
                     columns,
                     k_alpha,
-                    ..BlendInput::new(pipes.clone())
+                    ..BlendInput::new(pipes.to_vec())
                 };
                 let b = control_mesh(&input).unwrap();
                 let w = b.valley_vertices().start;
@@ -276,12 +283,14 @@ fn centre_and_valleys_move_monotonically() {
         let w = valleys(order, columns);
         for i in 1..steps.len() {
             assert!(
-                h[i].0 > h[i - 1].0 && h[i].1 > h[i - 1].1,
-                "k={order} n={columns} α: {h:?}"
+                (0..4).all(|j| h[i][j] > h[i - 1][j]),
+                "N={} k={order} n={columns} α: {h:?}",
+                pipes.len()
             );
             assert!(
                 w[i].0 < w[i - 1].0 && w[i].1 < w[i - 1].1,
-                "k={order} n={columns} k_α: {w:?}"
+                "N={} k={order} n={columns} k_α: {w:?}",
+                pipes.len()
             );
         }
     }

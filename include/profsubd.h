@@ -1128,6 +1128,33 @@ enum profsubd_status profsubd_fold_report_get_folded_faces(const struct profsubd
                                                            size_t *needed);
 
 /**
+ * Refine `mesh` `level` times (0 to 8) with generalized B-spline subdivision of order
+ * `order` (3..8) and level-0 tension `tension` (> −1; cos(π/n) makes n-column circles exact,
+ * 1 polynomial splines); `*out` receives the refined mesh (faces and positions, no tags),
+ * which the caller releases with `profsubd_mesh_free`.
+ *
+ * Even orders split every face into quads in OpenSubdiv Far's vertex-first order (children
+ * of the vertices, then of the faces, then of the edges; each parent face's quads in turn),
+ * so a child is found from its parent exactly as in `profsubd_refine_uniform`; at order 4
+ * and tension 1 the positions are Catmull–Clark's with edge-only boundaries. Odd orders
+ * refine on the Doo–Sabin split: child face `f` is face `f`'s corners, then one quad per
+ * interior edge, then one face per interior vertex. The mesh's infinitely sharp creases and
+ * corners follow the curve rule (even orders only); boundaries are edge-only (even) or free
+ * (odd).
+ *
+ * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` (mesh or out NULL), `PROFSUBD_ERROR_INVALID_HANDLE`,
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for an order outside 3..8, a tension not finite or
+ * ≤ −1, a level above 8 or a refined mesh above 2^26 face indices;
+ * `PROFSUBD_ERROR_INVALID_MESH` for a non-manifold mesh, holes, semi-sharp tags, tags at odd
+ * orders, or (odd orders) an inconsistently oriented mesh or an interior vertex of valence 2.
+ */
+enum profsubd_status profsubd_gbs_refine(const struct profsubd_mesh *mesh,
+                                         uint32_t order,
+                                         double tension,
+                                         uint32_t level,
+                                         struct profsubd_mesh **out);
+
+/**
  * Build the limit stencils of every control vertex of `mesh` under `options` (NULL: the
  * mesh's tags, then the defaults), one row per vertex in vertex order. `quantity` is
  * `PROFSUBD_LIMIT_POSITION` (the exact limit position, also at darts and semi-sharp

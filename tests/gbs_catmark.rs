@@ -4,7 +4,8 @@
 //! The reference is `refine_uniform`, which the C++ test `conformance_refine` checks against
 //! OpenSubdiv's Far (`TopologyRefiner::RefineUniform` + `PrimvarRefiner`) index by index on
 //! every shape under every boundary option; GBS even orders use the same quad split, so a
-//! child is matched to Far's by its parent.
+//! child is matched to Far's by its parent. The C++ test `conformance_gbs` compares GBS with
+//! Far directly (through `profsubd_gbs_refine`).
 
 #[path = "support/osd_shapes.rs"]
 mod osd_shapes;

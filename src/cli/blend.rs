@@ -7,9 +7,11 @@ use std::path::PathBuf;
 use clap::Args;
 
 use super::construct::{write_fitted, FitFlags, SurfaceOutput};
-use crate::construct::blend::{build, BlendInput};
+use crate::construct::blend::{build, control_mesh, BlendInput};
 use crate::construct::settings::read_json;
 use crate::error::Result;
+use crate::mesh::Mesh;
+use crate::topology::Level;
 
 /// Arguments of `blend`.
 #[derive(Debug, Args)]
@@ -37,10 +39,31 @@ pub fn run(args: &BlendArgs) -> Result<i32> {
     args.fit.apply(&mut settings);
     let fitted = build(&input, &settings)?;
     let report = fitted.surface_report()?;
+    let gbs = control_mesh(&input)?;
     write_fitted(&fitted, &args.out)?;
+    println!(
+        "valences: GBS control mesh {}; Catmull-Clark result {} ({} pipes)",
+        valences(&gbs.mesh),
+        valences(&fitted.mesh),
+        input.pipes.len()
+    );
     println!(
         "distance between the GBS and Catmull-Clark limit surfaces: max {:.3e}, mean {:.3e} (x bounding-box diagonal, normal distance on a 4 x 4 lattice per face)",
         report.max_design_distance, report.mean_design_distance
     );
     Ok(0)
+}
+
+/// "valence x count, ..." of the vertices of `mesh`, ascending.
+fn valences(mesh: &Mesh) -> String {
+    let level = Level::from_mesh(mesh);
+    let mut counts = std::collections::BTreeMap::new();
+    for v in 0..level.num_vertices() {
+        *counts.entry(level.valence(v)).or_insert(0usize) += 1;
+    }
+    counts
+        .iter()
+        .map(|(valence, count)| format!("{valence} x {count}"))
+        .collect::<Vec<_>>()
+        .join(", ")
 }

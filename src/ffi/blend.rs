@@ -68,7 +68,7 @@ mod tests {
     use crate::ffi::fitted::profsubd_fitted_free;
 
     #[test]
-    fn builds_a_tee_and_refuses_two_pipes() {
+    fn builds_a_tee_and_refuses_bad_input() {
         #[rustfmt::skip]
         let pipes = [
             2.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 4.0,
@@ -95,6 +95,59 @@ mod tests {
             profsubd_status::PROFSUBD_ERROR_INVALID_ARGUMENT
         );
         assert!(out.is_null(), "output untouched on error");
+        // Each bad input: a specific message, the output untouched.
+        let refuse = |pipes: &[f64], order: u32, tension: f64, says: &str| {
+            let mut out: *mut profsubd_fitted = std::ptr::null_mut();
+            let status = unsafe {
+                profsubd_blend(
+                    pipes.as_ptr(),
+                    pipes.len() / 8,
+                    4,
+                    order,
+                    tension,
+                    0.3,
+                    0.5,
+                    1,
+                    std::ptr::null(),
+                    &mut out,
+                )
+            };
+            assert_eq!(status, profsubd_status::PROFSUBD_ERROR_INVALID_ARGUMENT);
+            let message = unsafe {
+                std::ffi::CStr::from_ptr(crate::ffi::message::profsubd_last_error_message())
+            };
+            assert!(message.to_str().unwrap().contains(says), "{message:?}");
+            assert!(out.is_null(), "{says}: output untouched on error");
+        };
+        refuse(&pipes[..8], 4, f64::NAN, "3 to 8 pipes");
+        refuse(&pipes, 2, f64::NAN, "order 2");
+        refuse(&pipes, 9, f64::NAN, "order 9");
+        refuse(&pipes, 4, -1.0, "tension");
+        let with = |at: usize, values: &[f64]| {
+            let mut p = pipes;
+            p[at..at + values.len()].copy_from_slice(values);
+            p
+        };
+        refuse(&with(22, &[0.0]), 4, f64::NAN, "radius");
+        refuse(&with(22, &[-0.5]), 4, f64::NAN, "radius");
+        refuse(
+            &with(16, &[0.5, 2.0, 0.0, 1.0, 0.0, 0.0]),
+            4,
+            f64::NAN,
+            "parallel",
+        );
+        refuse(
+            &with(16, &[2.0, 0.0, 0.0, 1.0, 1.0, 0.0]),
+            4,
+            f64::NAN,
+            "coincident",
+        );
+        refuse(
+            &with(16, &[2.0, 1.5, 0.0, 1.0, 0.2, 0.0]),
+            4,
+            f64::NAN,
+            "intersect before the junction",
+        );
         assert_eq!(call(3, &mut out), profsubd_status::PROFSUBD_OK);
         assert!(!out.is_null());
         unsafe { profsubd_fitted_free(out) };

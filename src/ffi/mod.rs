@@ -58,6 +58,7 @@ pub mod error;
 pub mod evaluator;
 pub mod fitted;
 pub mod folds;
+pub mod gbs;
 pub mod handle;
 pub mod limit;
 pub mod mesh;

@@ -7,8 +7,13 @@
 //! and a left arc of s = ⌊(n − 1)/2⌋ edges run down to the bottom edge BR–BL (even n) or to
 //! one bottom vertex B (odd n). The hub:
 //! - top and bottom centres V0 = mean of the top (bottom) valley midpoints ± α·ρ̄·up, each
-//!   split into an N-gon of points C_i = V0 + ⅓(M_i − V0), M_i the midpoint of TR_i and
-//!   TL_{i+1} (bottom: of the arcs' lower ends): no vertex of valence N;
+//!   split into a ring of points C_i = V0 + ⅓(M_i − V0), M_i the midpoint of TR_i and
+//!   TL_{i+1} (bottom: of the arcs' lower ends). For N ≤ 4 the ring is one face (a triangle
+//!   or a quad); for N ≥ 5, V0 stays a vertex (the apex) and the ring is cut into a fan of
+//!   ⌊N/2⌋ quads (V0, C_{2j}, C_{2j+1}, C_{2j+2}) and, for odd N, one triangle
+//!   (V0, C_{N−1}, C_0). No face has more than 5 sides and no vertex more than 5 edges, so
+//!   no vertex of valence N forms at any level (a primal step turns an N-gon into a
+//!   valence-N vertex, and N-fold symmetric topology would need one at the centre);
 //! - a column of s + 1 valley points per valley, W_i^m = midpoint of row m of pipe i's right
 //!   arc and pipe i + 1's left arc + k_α·(A − I), A − I the two pipes' mean last row minus
 //!   the row behind it;
@@ -18,8 +23,9 @@
 //!   per bottom vertex (W_i^s, B_i, W_{i−1}^s, Cb_{i−1}, Cb_i) (odd n).
 //!
 //! Valences: ring corners and bottom vertices 5, other arc vertices 4, centre points 4 (3
-//! under odd rings), valley points 3 at the ends of a column and 4 inside it (and at the
-//! bottom of odd rings), pipe vertices 4 (2 or 3 on the free ends).
+//! under odd rings; one more on a fan's spokes), apexes ⌈N/2⌉, valley points 3 at the ends
+//! of a column and 4 inside it (and at the bottom of odd rings), pipe vertices 4 (2 or 3 on
+//! the free ends).
 
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
@@ -60,7 +66,8 @@ pub struct PlacedPipe {
 #[derive(Debug, Clone)]
 pub struct BlendMesh {
     /// The control mesh: pipe vertices first (pipe by pipe, ring by ring from the junction),
-    /// then the top centre points, bottom centre points, top valleys, bottom valleys.
+    /// then the top centre points, bottom centre points, the valleys row by row, and (N ≥ 5)
+    /// the top and bottom apexes.
     pub mesh: Mesh,
     /// The pipes in hub order.
     pub pipes: Vec<PlacedPipe>,
@@ -82,6 +89,32 @@ impl BlendMesh {
         let n = self.pipes.len();
         self.first_hub_vertex + 2 * n..self.first_hub_vertex + (2 + self.valley_rows) * n
     }
+    /// The top and bottom apexes (the centres V0 as vertices; none for N ≤ 4).
+    pub fn apex_vertices(&self) -> std::ops::Range<usize> {
+        let start = self.valley_vertices().end;
+        start..start + if self.pipes.len() >= FAN_FROM { 2 } else { 0 }
+    }
+}
+
+/// Fewest pipes whose centre ring is cut into a fan round an apex (fewer make one face of at
+/// most 4 sides).
+pub const FAN_FROM: usize = 5;
+
+/// The faces that cover the centre ring `ring` (counter-clockwise seen from outside) round
+/// the apex `apex`: the ring itself for fewer than [`FAN_FROM`] points, else ⌊N/2⌋ quads
+/// (apex, r_{2j}, r_{2j+1}, r_{2j+2}) and for odd N the triangle (apex, r_{N−1}, r_0).
+fn centre_faces(ring: &[usize], apex: usize) -> Vec<Vec<usize>> {
+    let n = ring.len();
+    if n < FAN_FROM {
+        return vec![ring.to_vec()];
+    }
+    let mut faces: Vec<Vec<usize>> = (0..n / 2)
+        .map(|j| vec![apex, ring[2 * j], ring[2 * j + 1], ring[(2 * j + 2) % n]])
+        .collect();
+    if n % 2 == 1 {
+        faces.push(vec![apex, ring[n - 1], ring[0]]);
+    }
+    faces
 }
 
 /// Share of the largest axis cross product within which a pair of pipes counts as spanning
@@ -205,6 +238,9 @@ pub fn control_mesh(input: &BlendInput) -> Result<BlendMesh> {
     for m in 0..=s {
         hub.extend((0..n).map(|i| mid(i, m) + push(i)));
     }
+    if n >= FAN_FROM {
+        hub.extend([top, bottom]);
+    }
     positions.extend(hub);
 
     let (ct, cb) = (
@@ -239,8 +275,12 @@ pub fn control_mesh(input: &BlendInput) -> Result<BlendMesh> {
             faces.push(vec![w(i, s), left(i, s), w(prev, s), cb(prev), cb(i)]);
         }
     }
-    faces.push((0..n).map(ct).collect());
-    faces.push((0..n).rev().map(cb).collect());
+    let apex = first_hub_vertex + (3 + s) * n;
+    faces.extend(centre_faces(&(0..n).map(ct).collect::<Vec<_>>(), apex));
+    faces.extend(centre_faces(
+        &(0..n).rev().map(cb).collect::<Vec<_>>(),
+        apex + 1,
+    ));
     let mesh = Mesh::from_parts(MeshParts {
         positions,
         face_sizes: faces.iter().map(|f| f.len() as u32).collect(),

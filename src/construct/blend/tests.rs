@@ -83,30 +83,51 @@ fn blends_are_oriented_manifolds_of_low_valence() {
                 let valence = |v: usize| level.valence(v);
                 let centres: Vec<usize> = b.centre_vertices().map(valence).collect();
                 let valleys: Vec<usize> = b.valley_vertices().map(valence).collect();
+                let apexes: Vec<usize> = b.apex_vertices().map(valence).collect();
                 assert_eq!(valleys.len(), n * ((columns - 1) / 2 + 1), "{what}");
-                // Centres 4 (3 under an odd ring's bottom vertices), valleys 3 or 4.
-                assert!(centres[..n].iter().all(|&x| x == 4), "{what}: {centres:?}");
+                // Centres 4 (3 under an odd ring's bottom vertices), one more on a fan's
+                // spokes; apexes ⌈N/2⌉; valleys 3 or 4.
+                let fan = n >= super::hub::FAN_FROM;
                 let bottom = if columns % 2 == 1 { 3 } else { 4 };
-                assert!(centres[n..].iter().all(|&x| x == bottom), "{what}");
+                for (i, &c) in centres.iter().enumerate() {
+                    let plain = if i < n { 4 } else { bottom };
+                    assert!(c == plain || (fan && c == plain + 1), "{what}: {centres:?}");
+                }
+                assert_eq!(apexes, vec![n.div_ceil(2); 2 * fan as usize], "{what}");
                 assert!(valleys.iter().all(|&x| x == 3 || x == 4), "{what}");
-                // Every hub vertex is one of those: no vertex joins all N pipes (N ≥ 5).
-                assert_eq!(b.valley_vertices().end, level.num_vertices());
+                // Every hub vertex is one of those.
+                assert_eq!(b.apex_vertices().end, level.num_vertices());
                 let max = (0..level.num_vertices()).map(valence).max();
                 assert_eq!(max, Some(5), "{what}");
                 let mut sizes: Vec<usize> = (0..level.num_faces())
                     .map(|f| level.face_vertices(f).len())
                     .collect();
-                sizes.dedup();
                 sizes.sort();
                 sizes.dedup();
-                // Quads, the two centre N-gons and (odd n) the pentagons.
-                let mut want = vec![4, n];
+                // Quads, the centre triangle (N odd) and (odd n) the pentagons.
+                let mut want = vec![4];
+                if n % 2 == 1 {
+                    want.push(3);
+                }
                 if columns % 2 == 1 {
                     want.push(5);
                 }
                 want.sort();
-                want.dedup();
                 assert_eq!(sizes, want, "{what}");
+                // No valence grows with N, at any level: at most 5 edges per vertex (even
+                // orders' quad split), at most 5 sides per face (odd orders' Doo–Sabin split,
+                // whose faces stand for vertices), so no vertex of valence N for N ≥ 6.
+                for levels in 1..=2 {
+                    let l = refine_gbs(&b.mesh, &input.gbs_options(), levels)
+                        .unwrap()
+                        .level;
+                    let most = if order % 2 == 0 {
+                        (0..l.num_vertices()).map(|v| l.valence(v)).max()
+                    } else {
+                        (0..l.num_faces()).map(|f| l.face_vertices(f).len()).max()
+                    };
+                    assert_eq!(most, Some(5), "{what} level {levels}");
+                }
                 let refined = refine_gbs(&b.mesh, &input.gbs_options(), 2).unwrap();
                 let l2 = &refined.level;
                 assert!((0..l2.num_edges()).all(|e| !l2.is_edge_non_manifold(e)));
@@ -208,9 +229,14 @@ fn pipes_stay_exact_away_from_the_hub() {
 
 #[test]
 fn centre_and_valleys_move_monotonically() {
-    let pipes = star(5, 2.5);
+    for pipes in [3, 4, 5, 6].map(|n| star(n, 2.5)) {
+        centre_and_valleys_of(&pipes);
+    }
+}
+
+fn centre_and_valleys_of(pipes: &[Pipe]) {
     let steps = [0.0, 0.25, 0.5, 1.0, 2.0];
-    let heights = |order: u32, columns: usize| -> Vec<(f64, f64)> {
+    let heights = |order: u32, columns: usize| -> Vec<[f64; 4]> {
         steps
             .iter()
             .map(|&alpha| {
@@ -218,16 +244,16 @@ fn centre_and_valleys_move_monotonically() {
                     order,
                     columns,
                     alpha,
-                    ..BlendInput::new(pipes.clone())
+                    ..BlendInput::new(pipes.to_vec())
                 };
                 let b = control_mesh(&input).unwrap();
+                // A centre point and the apex (N ≥ 5; else the centre point again).
                 let c = b.centre_vertices().start;
+                let apex = b.apex_vertices().next().unwrap_or(c);
                 let refined = refine_gbs(&b.mesh, &input.gbs_options(), 3).unwrap();
                 // Even orders keep vertex v's descendant at index v (vertices first).
-                (
-                    b.mesh.positions()[c].dot(b.up),
-                    refined.positions[c].dot(b.up),
-                )
+                let (p0, p3) = (b.mesh.positions(), &refined.positions);
+                [p0[c], p3[c], p0[apex], p3[apex]].map(|p| p.dot(b.up))
             })
             .collect()
     };
@@ -239,7 +265,7 @@ fn centre_and_valleys_move_monotonically() {
                     order,
                     columns,
                     k_alpha,
-                    ..BlendInput::new(pipes.clone())
+                    ..BlendInput::new(pipes.to_vec())
                 };
                 let b = control_mesh(&input).unwrap();
                 let w = b.valley_vertices().start;
@@ -257,12 +283,14 @@ fn centre_and_valleys_move_monotonically() {
         let w = valleys(order, columns);
         for i in 1..steps.len() {
             assert!(
-                h[i].0 > h[i - 1].0 && h[i].1 > h[i - 1].1,
-                "k={order} n={columns} α: {h:?}"
+                (0..4).all(|j| h[i][j] > h[i - 1][j]),
+                "N={} k={order} n={columns} α: {h:?}",
+                pipes.len()
             );
             assert!(
                 w[i].0 < w[i - 1].0 && w[i].1 < w[i - 1].1,
-                "k={order} n={columns} k_α: {w:?}"
+                "N={} k={order} n={columns} k_α: {w:?}",
+                pipes.len()
             );
         }
     }

@@ -285,10 +285,9 @@ fn classify(
     }
 }
 
-/// Whether the crease vertex `c` (star `star`, sharp edge at `c` towards `sharp_next`'s
-/// side of quad `f` or the other) is a crease corner of `f`: the sector on `f`'s side is
-/// `f` and the quad across `f`'s smooth edge, which must itself end on the other sharp
-/// edge.
+/// Whether the crease vertex `c` (star `star`) is a crease corner of quad `f`, whose edge
+/// `(c, smooth_end)` is the smooth one: the sector on `f`'s side is `f` and the quad across
+/// that edge, which must itself end on the other sharp edge.
 fn crease_fits(nb: &Neighbourhood, star: &VertexStar, f: u32, c: u32, smooth_end: u32) -> bool {
     match across(nb, star, f, c, smooth_end) {
         Some((g, beyond)) if nb.face(g).len() == 4 => star

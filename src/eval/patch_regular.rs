@@ -533,8 +533,8 @@ impl PatchTest {
         // Edge `k` (corner `k` to `k + 1`) is sharp as its first corner sees it; the edges
         // at a smooth vertex are all smooth.
         let mut boundary: BoundaryMask = 0;
-        for k in 0..4 {
-            if classes[k] != VertexClass::Smooth && self.sharp_corner(nb, f, k, classes[k])? {
+        for (k, &class) in classes.iter().enumerate() {
+            if class != VertexClass::Smooth && self.sharp_corner(nb, f, k, class)? {
                 boundary |= 1 << k;
             }
         }

@@ -3,9 +3,9 @@
 // Mesh: OpenSubdiv's catmark_car and catmark_bishop refined once by Far and put side by side
 // (10,040 quads: extraordinary vertices, semi-sharp creases, boundaries), or the OBJs given as
 // arguments (each refined once, then merged). Built by cmake, not run by ctest:
-// `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [mesh.obj...]`
+// `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [--memory] [mesh.obj...]`
 // (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
-// each side, untimed, for callgrind), or `bench_eval --scale [--scale-min D] [--scale-max E]
+// each side, untimed, for callgrind; `--memory`: the heap a built evaluator holds on each side), or `bench_eval --scale [--scale-min D] [--scale-max E]
 // [--scale-only FAMILY-PREFIX]`: build, position
 // update, evaluation and refinement at 10^D..10^E faces (3 and 6 by default) on random and
 // shape-derived meshes (scripts/plot_scale.py plots its rows).
@@ -47,6 +47,7 @@
 #include <opensubdiv/osd/ompEvaluator.h>
 #include <opensubdiv/osd/types.h>
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -328,6 +329,41 @@ std::vector<uint64_t> table_words(const profsubd_stencil_table *t) {
     return out;
 }
 
+// Heap bytes the process holds (glibc's mallinfo2 over all arenas: chunks in use plus
+// mmapped blocks).
+size_t heap_in_use() {
+    struct mallinfo2 m = mallinfo2();
+    return m.uordblks + m.hblkhd;
+}
+
+// Memory of a built evaluator on each side: heap held after the build less before it (one
+// thread; profsubd_evaluator_new with its positions, Far's adaptive TopologyRefiner +
+// PatchTable + PatchMap with the refined and local points' positions, as far_build).
+void memory(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh, profsubd_options *opts) {
+    profsubd_options_set_threads(opts, 1);
+    size_t before = heap_in_use();
+    profsubd_evaluator *ev = nullptr;
+    if (profsubd_evaluator_new(mesh, opts, &ev) != PROFSUBD_OK)
+        std::fprintf(stderr, "build: %s\n", profsubd_last_error_message());
+    double ps = (double)(heap_in_use() - before);
+    profsubd_evaluator_free(ev);
+    before = heap_in_use();
+    std::unique_ptr<Far::TopologyRefiner> adaptive;
+    std::unique_ptr<Far::PatchTable> table;
+    std::unique_ptr<Far::PatchMap> pmap;
+    std::vector<profsubd_test::FarPoint> pp;
+    far_build(shape, adaptive, table, pmap, pp);
+    double far = (double)(heap_in_use() - before);
+    adaptive.reset();
+    double far_no_refiner = (double)(heap_in_use() - before);
+    const double mib = 1.0 / (1024.0 * 1024.0);
+    std::printf("\nMemory of a built evaluator (heap held after the build, mallinfo2, one thread)\n");
+    std::printf("  profsubd evaluator:                                 %8.1f MiB\n", ps * mib);
+    std::printf("  Far TopologyRefiner + PatchTable + PatchMap + points: %8.1f MiB (%.1f MiB without the refiner)\n",
+                far * mib, far_no_refiner * mib);
+    std::printf("  ratio profsubd/Far memory: %.3f (without the refiner: %.3f)\n", ps / far, ps / far_no_refiner);
+}
+
 // --build-only: each side's build and one position update, once, untimed: the run to profile
 // with `valgrind --tool=callgrind` (instruction counts, repeatable on a loaded machine).
 void build_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh, const profsubd_options *opts) {
@@ -556,7 +592,7 @@ void scale(int min_exp, int max_exp, const std::string &only) {
 }  // namespace
 
 int main(int argc, char **argv) {
-    bool p2_only = false, build_only_mode = false;
+    bool p2_only = false, build_only_mode = false, memory_only = false;
     int scale_max = 0, scale_min = 3;
     std::string scale_only;
     std::vector<std::string> paths;
@@ -565,6 +601,8 @@ int main(int argc, char **argv) {
             p2_only = true;
         else if (std::string(argv[i]) == "--build-only")
             build_only_mode = true;
+        else if (std::string(argv[i]) == "--memory")
+            memory_only = true;
         else if (std::string(argv[i]) == "--scale")
             scale_max = std::max(scale_max, 6);
         else if (std::string(argv[i]) == "--scale-max" && i + 1 < argc)
@@ -603,6 +641,11 @@ int main(int argc, char **argv) {
         return 1;
     }
     profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
+    if (memory_only) {
+        memory(shape, mesh.get(), opts);
+        profsubd_options_free(opts);
+        return 0;
+    }
     if (build_only_mode) {
         build_only(shape, mesh.get(), opts);
         profsubd_options_free(opts);
@@ -782,6 +825,7 @@ int main(int argc, char **argv) {
     std::printf("  Far refinement + local-point stencils:     %8.2f ms  (%d stencils, double)\n", 1e3 * t_update_far,
                 stencils->GetNumStencils());
     std::printf("  ratio profsubd/OpenSubdiv position update: %.3f\n", t_update_ps / t_update_far);
+    memory(shape, mesh.get(), opts);
 
 
     // --- Threads: profsubd at 1, 2 and all cores beside Osd::OmpEvaluator (float).

@@ -183,16 +183,6 @@ fn edge_sharpness(nb: &Neighbourhood, c: u32, e: &EdgeAt) -> f32 {
     }
 }
 
-/// What a corner of a quad contributes to the patch test.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum CornerKind {
-    Smooth,
-    /// Crease along one of the face's edges at the corner (the boundary mask says which).
-    Crease,
-    Corner,
-    Irregular,
-}
-
 fn is_infinite(s: f32) -> bool {
     s >= SHARPNESS_INFINITE
 }
@@ -218,19 +208,37 @@ fn faces_overlap(nb: &Neighbourhood, c: u32) -> bool {
     false
 }
 
-/// Classify corner `k` of quad `f`, whose vertex has the edges `star`, from the counts and
-/// tags of its edges and faces ([`regular_patch`] also checks [`faces_overlap`]).
-fn corner_kind_by_counts(
+/// What a vertex is as the corner of a quad, whatever the quad: the part of the patch test
+/// that does not depend on the face (Far tags each vertex of a level once, too).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum VertexClass {
+    /// Not classified yet.
+    Unknown,
+    /// A corner of no regular patch.
+    Irregular,
+    /// A smooth corner of each of its quads.
+    Smooth,
+    /// The corner rule applies: a corner of the quads whose two edges at it are infinitely
+    /// sharp.
+    CornerRule,
+    /// Two infinitely sharp edges: a crease corner of the quads whose sector is one quad
+    /// on each side of the smooth edge (checked per face, [`crease_fits`]).
+    Crease,
+}
+
+/// Classify vertex `c` from its star (filled here into `star`), its edges' and faces'
+/// counts and tags, and [`faces_overlap`]. Effective sharpness as the module doc says.
+fn classify(
     nb: &Neighbourhood,
-    f: u32,
-    k: usize,
-    star: &VertexStar,
+    c: u32,
+    star: &mut VertexStar,
     options: &SubdivOptions,
-) -> CornerKind {
-    let face = nb.face(f);
-    let c = face[k];
-    let (next, prev) = neighbours(face, k);
-    let nfaces = nb.vertex_faces(c).len();
+) -> VertexClass {
+    if star.fill(nb, c).is_none() {
+        return VertexClass::Irregular;
+    }
+    let faces = nb.vertex_faces(c);
+    let nfaces = faces.len();
     let nedges = star.len;
     let mut infinite = 0;
     let mut nonmanifold_edges = 0;
@@ -238,13 +246,14 @@ fn corner_kind_by_counts(
     for e in star.edges() {
         let s = edge_sharpness(nb, c, e);
         if s > 0.0 && !is_infinite(s) {
-            return CornerKind::Irregular;
+            return VertexClass::Irregular;
         }
         infinite += usize::from(is_infinite(s));
         boundary_edges += usize::from(e.count() == 1);
         nonmanifold_edges += usize::from(e.count() != 1 && !e.is_manifold());
     }
-    let manifold = nonmanifold_edges == 0 && is_single_fan(nb, star, c, f, nfaces);
+    // Whether the faces form one fan does not depend on the face the walk starts from.
+    let manifold = nonmanifold_edges == 0 && is_single_fan(nb, star, c, faces[0], nfaces);
     let mut vertex = nb.vertex_tag(c);
     if nfaces == 1 && nedges == 2 && options.boundary == BoundaryInterpolation::EdgeAndCorner {
         vertex = SHARPNESS_INFINITE;
@@ -257,44 +266,34 @@ fn corner_kind_by_counts(
         vertex = SHARPNESS_INFINITE;
     }
     if vertex > 0.0 && !is_infinite(vertex) {
-        return CornerKind::Irregular;
+        return VertexClass::Irregular;
     }
-    let sharp_next = star
-        .find(next)
-        .map(|e| is_infinite(edge_sharpness(nb, c, e)));
-    let sharp_prev = star
-        .find(prev)
-        .map(|e| is_infinite(edge_sharpness(nb, c, e)));
-    let (Some(sharp_next), Some(sharp_prev)) = (sharp_next, sharp_prev) else {
-        return CornerKind::Irregular;
+    let class = if vertex > 0.0 || infinite > 2 {
+        VertexClass::CornerRule
+    } else if infinite == 0 && manifold && nfaces == 4 && nedges == 4 && all_quads(nb, c) {
+        VertexClass::Smooth
+    } else if infinite == 2 {
+        VertexClass::Crease
+    } else {
+        VertexClass::Irregular
     };
-    let corner_rule = vertex > 0.0 || infinite > 2;
-    if corner_rule {
-        return if sharp_next && sharp_prev {
-            CornerKind::Corner
-        } else {
-            CornerKind::Irregular
-        };
+    // A seemingly regular corner whose faces overlap in more than an edge is irregular.
+    if class != VertexClass::Irregular && faces_overlap(nb, c) {
+        VertexClass::Irregular
+    } else {
+        class
     }
-    match infinite {
-        0 if manifold && nfaces == 4 && nedges == 4 && all_quads(nb, c) => CornerKind::Smooth,
-        2 if sharp_next != sharp_prev => {
-            // The sector on F's side: F and the quad across F's smooth edge, which must
-            // itself end on the other sharp edge.
-            let smooth_end = if sharp_next { prev } else { next };
-            match across(nb, star, f, c, smooth_end) {
-                Some((g, beyond)) if nb.face(g).len() == 4 => {
-                    let e = star.find(beyond);
-                    if e.is_some_and(|e| is_infinite(edge_sharpness(nb, c, e))) {
-                        CornerKind::Crease
-                    } else {
-                        CornerKind::Irregular
-                    }
-                }
-                _ => CornerKind::Irregular,
-            }
-        }
-        _ => CornerKind::Irregular,
+}
+
+/// Whether the crease vertex `c` (star `star`) is a crease corner of quad `f`, whose edge
+/// `(c, smooth_end)` is the smooth one: the sector on `f`'s side is `f` and the quad across
+/// that edge, which must itself end on the other sharp edge.
+fn crease_fits(nb: &Neighbourhood, star: &VertexStar, f: u32, c: u32, smooth_end: u32) -> bool {
+    match across(nb, star, f, c, smooth_end) {
+        Some((g, beyond)) if nb.face(g).len() == 4 => star
+            .find(beyond)
+            .is_some_and(|e| is_infinite(edge_sharpness(nb, c, e))),
+        _ => false,
     }
 }
 
@@ -405,14 +404,13 @@ pub fn regular_patch_points(
     PatchTest::new().points(nb, f, options)
 }
 
-/// The patch test's working memory, reused from face to face of one fragment (the stars
-/// are a few kilobytes to clear otherwise), and which vertices are known to be smooth
-/// corners: whether a corner is smooth does not depend on the face it is tested for, and
-/// each vertex is a corner of four faces.
+/// The patch test's working memory, reused from face to face of one fragment (a star is a
+/// few hundred bytes to clear otherwise), and each vertex's [`VertexClass`] once known:
+/// every vertex is a corner of four faces, and most of the test does not depend on the face.
 pub struct PatchTest {
-    stars: [VertexStar; 4],
-    /// Per vertex of the fragment [`PatchTest::start`] was given: true once seen smooth.
-    smooth: Vec<bool>,
+    star: VertexStar,
+    /// Per vertex of the fragment [`PatchTest::start`] was given.
+    classes: Vec<VertexClass>,
 }
 
 impl Default for PatchTest {
@@ -421,19 +419,91 @@ impl Default for PatchTest {
     }
 }
 
+/// The face other than `f` on edge `(c, d)` (`c` in it once) and the position of `c` in it;
+/// `None` unless the edge has exactly one other face. As [`across`], without a star.
+fn across_at(nb: &Neighbourhood, f: u32, c: u32, d: u32) -> Option<(u32, usize)> {
+    let mut found = None;
+    for &g in nb.vertex_faces(c) {
+        if g == f {
+            continue;
+        }
+        let face = nb.face(g);
+        let i = face.iter().position(|&x| x == c)?;
+        let (next, prev) = neighbours(face, i);
+        if next != d && prev != d {
+            continue;
+        }
+        if found.is_some() {
+            return None;
+        }
+        found = Some((g, i));
+    }
+    found
+}
+
+/// The vertex next to `c` in `face` (where `c` is at `i`) that is not `d`, as [`across`]
+/// picks it.
+fn other_neighbour(face: &[u32], i: usize, d: u32) -> u32 {
+    let (next, prev) = neighbours(face, i);
+    if next == d {
+        prev
+    } else {
+        next
+    }
+}
+
 impl PatchTest {
     /// A test that remembers nothing between faces until [`PatchTest::start`].
     pub fn new() -> PatchTest {
         PatchTest {
-            stars: std::array::from_fn(|_| VertexStar::new()),
-            smooth: Vec::new(),
+            star: VertexStar::new(),
+            classes: Vec::new(),
         }
     }
 
     /// Start testing the faces of a fragment of `num_vertices` vertices.
     pub fn start(&mut self, num_vertices: usize) {
-        self.smooth.clear();
-        self.smooth.resize(num_vertices, false);
+        self.classes.clear();
+        self.classes.resize(num_vertices, VertexClass::Unknown);
+    }
+
+    /// The class of vertex `c`, remembered when `c` is a vertex of the started fragment.
+    fn class(&mut self, nb: &Neighbourhood, c: u32, options: &SubdivOptions) -> VertexClass {
+        match self.classes.get(c as usize) {
+            Some(&VertexClass::Unknown) => {
+                let class = classify(nb, c, &mut self.star, options);
+                self.classes[c as usize] = class;
+                class
+            }
+            Some(&known) => known,
+            None => classify(nb, c, &mut self.star, options),
+        }
+    }
+
+    /// Whether corner `k` of quad `f` (vertex of class `class`, not smooth) fits a regular
+    /// patch, and if so whether `f`'s edge after it (from corner `k` to `k + 1`) is
+    /// infinitely sharp.
+    fn sharp_corner(
+        &mut self,
+        nb: &Neighbourhood,
+        f: u32,
+        k: usize,
+        class: VertexClass,
+    ) -> Option<bool> {
+        let face = nb.face(f);
+        let c = face[k];
+        let (next, prev) = neighbours(face, k);
+        let star = &mut self.star;
+        star.fill(nb, c)?;
+        let sharp_next = is_infinite(edge_sharpness(nb, c, star.find(next)?));
+        let sharp_prev = is_infinite(edge_sharpness(nb, c, star.find(prev)?));
+        let fits = if class == VertexClass::CornerRule {
+            sharp_next && sharp_prev
+        } else {
+            let smooth_end = if sharp_next { prev } else { next };
+            sharp_next != sharp_prev && crease_fits(nb, star, f, c, smooth_end)
+        };
+        fits.then_some(sharp_next)
     }
 
     /// [`regular_patch_points`] for a face of the fragment of the last
@@ -453,52 +523,41 @@ impl PatchTest {
                 return None;
             }
         }
-        let mut kinds = [CornerKind::Irregular; 4];
-        let stars = &mut self.stars;
+        let mut classes = [VertexClass::Irregular; 4];
         for k in 0..4 {
-            let c = face[k];
-            stars[k].fill(nb, c)?;
-            if self.smooth.get(c as usize) == Some(&true) {
-                kinds[k] = CornerKind::Smooth;
-                continue;
-            }
-            kinds[k] = corner_kind_by_counts(nb, f, k, &stars[k], options);
-            // A seemingly regular corner whose faces overlap in more than an edge is irregular.
-            if kinds[k] == CornerKind::Irregular || faces_overlap(nb, c) {
+            classes[k] = self.class(nb, face[k], options);
+            if classes[k] == VertexClass::Irregular {
                 return None;
             }
-            if kinds[k] == CornerKind::Smooth {
-                if let Some(known) = self.smooth.get_mut(c as usize) {
-                    *known = true;
-                }
+        }
+        // Edge `k` (corner `k` to `k + 1`) is sharp as its first corner sees it; the edges
+        // at a smooth vertex are all smooth.
+        let mut boundary: BoundaryMask = 0;
+        for (k, &class) in classes.iter().enumerate() {
+            if class != VertexClass::Smooth && self.sharp_corner(nb, f, k, class)? {
+                boundary |= 1 << k;
             }
         }
-        let stars = &self.stars;
-        let mut boundary: BoundaryMask = 0;
         let mut pts = [NO_POINT; 16];
         for k in 0..4 {
             let (c, d) = (face[k], face[(k + 1) % 4]);
-            let (star_c, star_d) = (&stars[k], &stars[(k + 1) % 4]);
             pts[CORNER_SLOTS[k]] = c;
-            let sharp = star_c
-                .find(d)
-                .map(|e| is_infinite(edge_sharpness(nb, c, e)))?;
-            if sharp {
-                boundary |= 1 << k;
+            if boundary & (1 << k) != 0 {
                 continue;
             }
-            let (_, at_c) = across(nb, star_c, f, c, d)?;
-            let (_, at_d) = across(nb, star_d, f, d, c)?;
-            pts[ACROSS_SLOTS[k].0] = at_c;
-            pts[ACROSS_SLOTS[k].1] = at_d;
+            let (g, i) = across_at(nb, f, c, d)?;
+            let gf = nb.face(g);
+            let j = gf.iter().position(|&x| x == d)?;
+            pts[ACROSS_SLOTS[k].0] = other_neighbour(gf, i, d);
+            pts[ACROSS_SLOTS[k].1] = other_neighbour(gf, j, c);
         }
         for k in 0..4 {
-            if kinds[k] != CornerKind::Smooth {
+            if classes[k] != VertexClass::Smooth {
                 continue;
             }
-            let (c, star) = (face[k], &stars[k]);
-            let (g_next, _) = across(nb, star, f, c, face[(k + 1) % 4])?;
-            let (g_prev, _) = across(nb, star, f, c, face[(k + 3) % 4])?;
+            let c = face[k];
+            let (g_next, _) = across_at(nb, f, c, face[(k + 1) % 4])?;
+            let (g_prev, _) = across_at(nb, f, c, face[(k + 3) % 4])?;
             let g = *nb
                 .vertex_faces(c)
                 .iter()

@@ -17,7 +17,9 @@
 //! recorded as the weighted sum refinement computes it with (module `points`), and the
 //! positions are run through that program afterwards — at construction, and again by
 //! [`Evaluator::set_positions`], which gives bit for bit the evaluator built with the new
-//! positions.
+//! positions. Leaves and deep fragments hold indices into the program's points (as Far's
+//! patches index its refined and local points), so an update computes the points and
+//! nothing else.
 //!
 //! Evaluation allocates nothing except below [`CACHE_DEPTH`]; the evaluator is immutable
 //! while evaluating and `Sync`, so many threads may evaluate at once.
@@ -27,7 +29,7 @@ use std::sync::atomic::AtomicBool;
 
 use super::bspline::BicubicPatch;
 use super::domain::Domain;
-use super::patch_regular::{regular_patch, PatchPoints};
+use super::patch_regular::{regular_patch, PatchPoints, NO_POINT};
 use super::patch_topology::Neighbourhood;
 use super::points::PointProgram;
 use super::ptex::PtexFaces;
@@ -82,9 +84,10 @@ pub struct Evaluator {
     /// access less per evaluation).
     roots: Vec<Node>,
     nodes: Vec<Node>,
-    /// The leaves and deep fragments under the current positions.
-    values: Values,
-    /// Each leaf's control points as points of `program`.
+    /// Every point of `program` under the current positions.
+    points: Vec<DVec3>,
+    /// Each leaf's control points as points of `program`; the slots beyond a sharp side
+    /// name point 0 (the phantom construction overwrites them).
     patch_points: Vec<PatchPoints>,
     deep: Vec<DeepFragment>,
     /// Every point the leaves and deep fragments read, over the control points.
@@ -112,14 +115,6 @@ struct DeepFragment {
     nb: Neighbourhood,
     /// Each vertex as a point of the evaluator's program.
     points: Vec<u32>,
-}
-
-/// What evaluation reads for one set of control values (the positions, or three components
-/// of a primvar): each leaf's patch and each deep fragment's vertex values.
-#[derive(Debug, Clone, Default)]
-struct Values {
-    patches: Vec<BicubicPatch>,
-    deep: Vec<Vec<DVec3>>,
 }
 
 impl Evaluator {
@@ -216,13 +211,21 @@ impl Evaluator {
             .collect();
         kept.extend(deep.iter_mut().map(|d| &mut d.points[..]));
         program.prune(&mut kept);
+        // Evaluation then gathers 16 points without a branch per point.
+        for p in &mut patch_points {
+            for v in &mut p.vertices {
+                if *v == NO_POINT {
+                    *v = 0;
+                }
+            }
+        }
         Ok(Evaluator {
             mesh: mesh.clone(),
             options: *options,
             ptex,
             roots,
             nodes,
-            values: Values::default(),
+            points: Vec::new(),
             patch_points,
             deep,
             program,
@@ -251,33 +254,19 @@ impl Evaluator {
             )));
         }
         self.update(positions);
-        self.mesh = self.mesh.with_positions(positions);
+        self.mesh.set_positions(positions);
         Ok(())
     }
 
-    /// Patches and deep fragments from `positions` (checked).
+    /// The points from `positions` (checked), into the points' own buffer.
     fn update(&mut self, positions: &[DVec3]) {
-        self.values = self.values_of(positions);
-    }
-
-    /// Patches and deep fragments' vertex values from the control points' `control`.
-    fn values_of(&self, control: &[DVec3]) -> Values {
-        let values = self.program.run(control);
-        let points = &self.patch_points;
-        let patches = super::parallel::map(points.len(), self.threads, |i| {
-            points[i].patch(|v| values[v as usize])
-        });
-        let deep = self
-            .deep
-            .iter()
-            .map(|d| d.points.iter().map(|&p| values[p as usize]).collect())
-            .collect();
-        Values { patches, deep }
+        self.program.run_into(positions, &mut self.points);
     }
 
     /// Set how many threads batches of points ([`Evaluator::evaluate_many`],
-    /// [`Evaluator::evaluate_points`]) and position updates run on: 0 (the default) for all
-    /// cores. The results do not depend on it, bit for bit.
+    /// [`Evaluator::evaluate_points`]) run on: 0 (the default) for all cores (a position
+    /// update is one pass over the points, on the calling thread). The results do not
+    /// depend on it, bit for bit.
     pub fn set_threads(&mut self, threads: usize) {
         self.threads = threads;
     }
@@ -318,11 +307,12 @@ impl Evaluator {
     /// Errors ([`Error::InvalidArgument`]): `face` out of range, `u` or `v` outside `[0, 1]`
     /// or NaN, a hole face, a face without limit surface (boundary interpolation "none").
     pub fn evaluate(&self, face: u32, u: f64, v: f64) -> Result<LimitSample> {
-        self.evaluate_with(&self.values, face, u, v)
+        self.evaluate_with(&self.points, face, u, v)
     }
 
-    /// [`Evaluator::evaluate`] under `values` (the positions' or a primvar's).
-    fn evaluate_with(&self, values: &Values, face: u32, u: f64, v: f64) -> Result<LimitSample> {
+    /// [`Evaluator::evaluate`] under `points` (the program's points from the positions or
+    /// from three components of a primvar).
+    fn evaluate_with(&self, points: &[DVec3], face: u32, u: f64, v: f64) -> Result<LimitSample> {
         let Some(&root) = self.roots.get(face as usize) else {
             return Err(Error::invalid_argument(format!(
                 "face {face} is out of range; the mesh has {} parametric faces",
@@ -338,7 +328,10 @@ impl Evaluator {
         loop {
             match node {
                 Node::Patch(p) => {
-                    let (position, ds, dt) = values.patches[p as usize].evaluate(s, t);
+                    let leaf = &self.patch_points[p as usize];
+                    let control = leaf.vertices.map(|v| points[v as usize]);
+                    let patch = BicubicPatch::with_boundary(control, leaf.boundary);
+                    let (position, ds, dt) = patch.evaluate(s, t);
                     return Ok(LimitSample {
                         position,
                         du: ds * scale,
@@ -351,8 +344,13 @@ impl Evaluator {
                     (s, t, scale) = (cs, ct, scale * 2.0);
                 }
                 Node::Deep(d) => {
-                    let nb = &self.deep[d as usize].nb;
-                    return self.evaluate_deep(nb, &values.deep[d as usize], s, t, scale);
+                    let fragment = &self.deep[d as usize];
+                    let vertices: Vec<DVec3> = fragment
+                        .points
+                        .iter()
+                        .map(|&p| points[p as usize])
+                        .collect();
+                    return self.evaluate_deep(&fragment.nb, &vertices, s, t, scale);
                 }
                 Node::NoSurface => return Err(self.no_surface_error(face)),
             }

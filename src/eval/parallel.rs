@@ -71,14 +71,6 @@ pub(crate) fn try_map<T: Send, E: Send>(
     Ok(out)
 }
 
-/// [`try_map`] for work that cannot fail.
-pub(crate) fn map<T: Send>(n: usize, threads: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
-    match try_map(n, threads, |i| Ok::<T, std::convert::Infallible>(f(i))) {
-        Ok(v) => v,
-        Err(never) => match never {},
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

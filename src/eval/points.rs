@@ -147,18 +147,29 @@ impl PointProgram {
     ///
     /// Panics if `control` has fewer values than the program has control points.
     pub fn run(&self, control: &[DVec3]) -> Vec<DVec3> {
+        let mut values = Vec::new();
+        self.run_into(control, &mut values);
+        values
+    }
+
+    /// [`PointProgram::run`] into `values` (replaced; its allocation is reused).
+    ///
+    /// Panics as [`PointProgram::run`].
+    pub fn run_into(&self, control: &[DVec3], values: &mut Vec<DVec3>) {
         let nc = self.num_control as usize;
-        let mut values = Vec::with_capacity(self.num_points());
+        values.clear();
+        values.reserve(self.num_points());
         values.extend_from_slice(&control[..nc]);
-        for w in self.offsets.windows(2) {
-            let (a, b) = (w[0] as usize, w[1] as usize);
+        let mut a = 0;
+        for &end in &self.offsets[1..] {
+            let b = end as usize;
             let mut acc = DVec3::ZERO;
             for (&s, &wt) in self.sources[a..b].iter().zip(&self.weights[a..b]) {
                 acc.add_weighted(&values[s as usize], wt);
             }
             values.push(acc);
+            a = b;
         }
-        values
     }
 
     /// Append the local points of `other` (a program over the same control points) after

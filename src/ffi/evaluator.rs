@@ -94,10 +94,11 @@ pub unsafe extern "C" fn profsubd_evaluator_update_positions(
     })
 }
 
-/// Set how many threads `profsubd_evaluator_evaluate`, `profsubd_evaluator_evaluate_points`
-/// and `profsubd_evaluator_update_positions` use: `threads` = 0 (the default) for all cores,
-/// 1 for the calling thread only. Results are bit for bit the same for every setting. Not
-/// concurrently with other calls on the same evaluator.
+/// Set how many threads `profsubd_evaluator_evaluate` and
+/// `profsubd_evaluator_evaluate_points` use: `threads` = 0 (the default) for all cores, 1 for
+/// the calling thread only (`profsubd_evaluator_update_positions` is one pass on the calling
+/// thread). Results are bit for bit the same for every setting. Not concurrently with other
+/// calls on the same evaluator.
 ///
 /// Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `evaluator`.
 #[no_mangle]

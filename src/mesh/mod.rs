@@ -221,13 +221,10 @@ impl Mesh {
     pub fn parts(&self) -> &MeshParts {
         &self.parts
     }
-    /// This mesh with the vertex positions replaced by `positions` (as many, all finite: the
-    /// caller checks).
-    pub(crate) fn with_positions(&self, positions: &[DVec3]) -> Mesh {
+    /// Replace the vertex positions by `positions` (as many, all finite: the caller checks).
+    pub(crate) fn set_positions(&mut self, positions: &[DVec3]) {
         debug_assert!(positions.len() == self.num_vertices());
-        let mut parts = self.parts.clone();
-        parts.positions.copy_from_slice(positions);
-        Mesh::from_trusted_parts(parts, self.face_offsets.clone())
+        self.parts.positions.copy_from_slice(positions);
     }
     /// Consume the mesh and return its parts, to modify and validate again.
     pub fn into_parts(self) -> MeshParts {

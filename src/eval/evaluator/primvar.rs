@@ -81,9 +81,9 @@ impl Evaluator {
                     DVec3::from_array(c)
                 })
                 .collect();
-            let values = self.values_of(&control);
+            let points = self.program.run(&control);
             let samples = each_point(faces, u, v, self.threads, |f, u, v| {
-                self.evaluate_with(&values, f, u, v)
+                self.evaluate_with(&points, f, u, v)
             })?;
             for (i, s) in samples.iter().enumerate() {
                 let at = i * dim + first..i * dim + first + width;

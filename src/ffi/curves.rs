@@ -119,3 +119,6 @@ unsafe fn read_curves(
     }
     Ok(input)
 }
+
+#[cfg(test)]
+mod tests;

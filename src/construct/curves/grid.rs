@@ -21,7 +21,9 @@
 //! `U = u` or `V = v` (rays from the apex, lines parallel to the base) cross a pre-image near
 //! it is moved along that line to the nearest crossing, if the move is shorter than 0.3 of
 //! its shortest edge in the triangle (so no cell turns over); nodes are taken in order, each
-//! once.
+//! once. Before them, a pre-image's end inside the triangle takes its nearest inner node
+//! (distance in the triangle) if every quad around that node stays convex, so a stroke
+//! ending inside the patch is interpolated to its end.
 
 use std::collections::HashMap;
 
@@ -266,6 +268,7 @@ fn snap_three_sided(uv: &mut [DVec2], faces: &[[u32; 4]], blend: &Blend) {
     if blend.interior.is_empty() {
         return;
     }
+    snap_ends_three_sided(uv, faces, blend);
     let mut shortest = vec![f64::INFINITY; uv.len()];
     for f in faces {
         for k in 0..4 {
@@ -278,7 +281,7 @@ fn snap_three_sided(uv: &mut [DVec2], faces: &[[u32; 4]], blend: &Blend) {
     let mut found = Vec::new();
     for (node, p) in uv.iter_mut().enumerate() {
         if blend.on_curve(*p) {
-            continue; // the boundary
+            continue; // the boundary, or a curve's end
         }
         let here = in_triangle(*p);
         let mut best: Option<(f64, DVec2)> = None;
@@ -300,6 +303,63 @@ fn snap_three_sided(uv: &mut [DVec2], faces: &[[u32; 4]], blend: &Blend) {
         }
         if let Some((_, q)) = best {
             *p = q;
+        }
+    }
+}
+
+/// Each interior pre-image's end inside the 3-sided layout takes its nearest inner node
+/// (distance in the triangle), if that node is off every curve and moving it keeps every
+/// quad around it strictly convex in the triangle (so no cell turns over).
+fn snap_ends_three_sided(uv: &mut [DVec2], faces: &[[u32; 4]], blend: &Blend) {
+    let mut around: Vec<Vec<usize>> = vec![Vec::new(); uv.len()];
+    for (f, q) in faces.iter().enumerate() {
+        for &v in q {
+            around[v as usize].push(f);
+        }
+    }
+    // +1 or -1 if the quad is strictly convex in the triangle (its turning sense), else 0.
+    let turn = |uv: &[DVec2], f: usize| {
+        let c = faces[f].map(|v| in_triangle(uv[v as usize]));
+        let t: Vec<f64> = (0..4)
+            .map(|k| (c[(k + 1) % 4] - c[k]).perp_dot(c[(k + 2) % 4] - c[(k + 1) % 4]))
+            .collect();
+        if t.iter().all(|&x| x > 0.0) {
+            1
+        } else if t.iter().all(|&x| x < 0.0) {
+            -1
+        } else {
+            0
+        }
+    };
+    for c in &blend.interior {
+        for piece in &c.pieces {
+            for end in [piece[0].uv, piece[piece.len() - 1].uv] {
+                if end.min_element() <= 0.0 || end.max_element() >= 1.0 {
+                    continue; // clipped at the boundary: already on it
+                }
+                let at = in_triangle(end);
+                let nearest = (0..uv.len())
+                    .filter(|&k| !around[k].is_empty())
+                    .min_by(|&a, &b| {
+                        in_triangle(uv[a])
+                            .distance_squared(at)
+                            .total_cmp(&in_triangle(uv[b]).distance_squared(at))
+                    });
+                let Some(k) = nearest else { continue };
+                if blend.on_curve(uv[k]) {
+                    continue; // the boundary, or already on a curve
+                }
+                let before: Vec<i32> = around[k].iter().map(|&f| turn(uv, f)).collect();
+                let old = uv[k];
+                uv[k] = end;
+                if around[k]
+                    .iter()
+                    .zip(&before)
+                    .any(|(&f, &t)| turn(uv, f) != t)
+                {
+                    uv[k] = old;
+                }
+            }
         }
     }
 }

@@ -200,7 +200,7 @@ pub(super) fn saddle_and_cylinder_errors_and_their_trend() {
 }
 
 /// The bonnet-like design surface of the tests and the example.
-fn bonnet_z(x: f64, y: f64) -> f64 {
+pub(super) fn bonnet_z(x: f64, y: f64) -> f64 {
     0.3 * (1.0 - x * x / 4.0) + 0.15 * (1.0 - y * y)
 }
 

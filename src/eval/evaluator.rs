@@ -363,7 +363,11 @@ impl Evaluator {
     /// (the shell's crust), so that one read serves both.
     pub(crate) fn root_patch(&self, face: u32) -> Option<BicubicPatch> {
         match self.roots.get(face as usize)? {
-            Node::Patch(p) => Some(self.values.patches[*p as usize].clone()),
+            Node::Patch(p) => {
+                let leaf = &self.patch_points[*p as usize];
+                let control = leaf.vertices.map(|v| self.points[v as usize]);
+                Some(BicubicPatch::with_boundary(control, leaf.boundary))
+            }
             _ => None,
         }
     }

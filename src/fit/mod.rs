@@ -716,7 +716,9 @@ pub fn fit_limit(
         )));
     }
     // Only the positions change: the topology and tags were validated with `mesh`.
-    Ok((mesh.with_positions(&x), reached, report))
+    let mut fitted = mesh.clone();
+    fitted.set_positions(&x);
+    Ok((fitted, reached, report))
 }
 
 /// Estimated bytes a fit of `vertices` vertices and `face_indices` face-vertex indices

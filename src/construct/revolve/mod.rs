@@ -118,19 +118,33 @@ impl RevolveInput {
         let profile = self.profile_curve(settings)?;
         let rings = self.rings(settings, &profile, pole_room)?;
         let (grid, ring_s, radial) = (&rings.grid, &rings.ring_s, &rings.radial);
-        let layout = match self.layout_with(settings, &profile, grid, ring_s, radial) {
-            // The meridian caps' layout depends on the sectors' radial lines: where it folds
-            // with the side's spacing, the sectors spread evenly in the curve parameter.
-            Err(Error::InvalidArgument(_)) if radial.iter().any(|r| !r.is_empty()) => {
-                self.layout_with(settings, &profile, grid, ring_s, &Default::default())
+        // The meridian caps' layout depends on the sectors' radial lines: where it folds
+        // with the side's spacing, the sectors spread evenly in the curve parameter; only
+        // where both fold, the caps' grids are smoothed, in the same order.
+        let even = Default::default();
+        let spreads = if radial.iter().any(|r| !r.is_empty()) {
+            vec![radial, &even]
+        } else {
+            vec![radial]
+        };
+        let mut first_error = None;
+        for smoothing in [false, true] {
+            for &spread in &spreads {
+                match self.layout_with(settings, &profile, grid, ring_s, spread, smoothing) {
+                    Ok(layout) => return Ok((layout, rings.widened)),
+                    Err(e @ Error::InvalidArgument(_)) => {
+                        first_error.get_or_insert(e);
+                    }
+                    Err(e) => return Err(e),
+                }
             }
-            result => result,
-        }?;
-        Ok((layout, rings.widened))
+        }
+        Err(first_error.expect("at least one layout is tried"))
     }
 
     /// [`RevolveInput::layout`] with the pole sectors' radial samples `radial` (empty: evenly
-    /// in the curve parameter, [`cap_point`]; a full turn has none).
+    /// in the curve parameter, [`cap_point`]; a full turn has none) and the meridian caps'
+    /// `smoothing` ([`wedge_parts`]).
     fn layout_with(
         &self,
         settings: &Settings,
@@ -138,6 +152,7 @@ impl RevolveInput {
         grid: &SweepGrid,
         ring_s: &[f64],
         radial: &[Vec<f64>; 2],
+        smoothing: bool,
     ) -> Result<(MeshParts, DesignLattice, Vec<Role>)> {
         let design = RevolveDesign {
             profile,
@@ -152,7 +167,7 @@ impl RevolveInput {
                 grid_mesh_coords(grid, &|end, v| design.cap(end, v.radius, TAU * v.turn))?;
             (parts, coords, Vec::new())
         } else {
-            wedge_parts(self, settings, profile, grid, ring_s, radial)?
+            wedge_parts(self, settings, profile, grid, ring_s, radial, smoothing)?
         };
         let lattice = parts_lattice(&parts, &coords, &design, &settings.control)?;
         Ok((parts, lattice, roles))

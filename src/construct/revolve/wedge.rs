@@ -342,6 +342,7 @@ impl Wedge {
         column: &[u32],
         bottom: &[u32],
         top: &[u32],
+        smoothing: bool,
         shared: &mut Option<(usize, bool, Vec<u32>)>,
     ) -> Result<()> {
         let rz = |w: &Wedge, v: u32| {
@@ -369,7 +370,7 @@ impl Wedge {
                 (*a, plane.grid(*a, u, *smooth)?)
             }
             None => {
-                let (a, smooth, grid) = plane.choose()?;
+                let (a, smooth, grid) = plane.choose(smoothing)?;
                 let axis: Vec<u32> = grid[0]
                     .iter()
                     .enumerate()
@@ -515,8 +516,9 @@ impl MeridianPlane {
     /// evenly spread, so that a refusal stays cheap), and for each the axis spacings of
     /// [`MeridianPlane::axis_spacings`]; the Coons grids first, and only if every one of
     /// them folds, the first of the same layouts that folds no longer after
-    /// [`winslow_smooth`] (the `bool`: whether the grid was smoothed).
-    fn choose(&self) -> Result<(usize, bool, Vec<Vec<DVec2>>)> {
+    /// [`winslow_smooth`] if `smoothing` allows it (the `bool`: whether the grid was
+    /// smoothed).
+    fn choose(&self, smoothing: bool) -> Result<(usize, bool, Vec<Vec<DVec2>>)> {
         let rows = self.column.len() - 1;
         let last = (rows - 1) / 2;
         let splits: Vec<usize> = if last < MAX_SPLITS {
@@ -544,6 +546,10 @@ impl MeridianPlane {
         if let Some((_, a, grid)) = best {
             return Ok((a, false, grid));
         }
+        let first_error = first_error.expect("at least one layout is tried");
+        if !smoothing {
+            return Err(first_error);
+        }
         for &a in &splits {
             for u in self.axis_spacings(a) {
                 if let Ok(grid) = self.grid(a, u, true) {
@@ -551,7 +557,7 @@ impl MeridianPlane {
                 }
             }
         }
-        Err(first_error.expect("at least one layout is tried"))
+        Err(first_error)
     }
 
     /// Candidate axis spacings (fractions from the bottom apex to the top apex) for split
@@ -757,6 +763,9 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 /// (`Role::Keep`); a pole sector's inner vertices off creases are faired (`Role::Fair`,
 /// see the module documentation); the rest interpolate their data points.
 ///
+/// `smoothing`: a meridian cap whose every Coons grid folds may be relaxed by
+/// [`winslow_smooth`] (callers try the unsmoothed layouts first).
+///
 /// Errors ([`Error::InvalidArgument`]): caps with fewer than 2 rings, ends at one height, or
 /// a folding meridian cap.
 pub fn wedge_parts(
@@ -766,6 +775,7 @@ pub fn wedge_parts(
     grid: &SweepGrid,
     ring_s: &[f64],
     radial: &[Vec<f64>; 2],
+    smoothing: bool,
 ) -> Result<(MeshParts, Vec<DesignCoord>, Vec<Role>)> {
     let capped = settings.caps == Caps::Flat;
     let rows = grid.rings.len();
@@ -828,7 +838,7 @@ pub fn wedge_parts(
         for (side, theta) in [(0, 0.0), (1, angle)] {
             let column: Vec<u32> = (0..rows).map(|i| ring_ids(i)[side * (cols - 1)]).collect();
             let (bottom, top) = (&sectors[0].radials[side], &sectors[1].radials[side]);
-            w.meridian_cap(theta, &column, bottom, top, &mut shared)?;
+            w.meridian_cap(theta, &column, bottom, top, smoothing, &mut shared)?;
         }
     }
     let on_crease: HashSet<u32> = w.creased.iter().flat_map(|&(a, b)| [a, b]).collect();

@@ -763,8 +763,8 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 /// (`Role::Keep`); a pole sector's inner vertices off creases are faired (`Role::Fair`,
 /// see the module documentation); the rest interpolate their data points.
 ///
-/// `smoothing`: a meridian cap whose every Coons grid folds may be relaxed by
-/// [`winslow_smooth`] (callers try the unsmoothed layouts first).
+/// `smoothing`: a meridian cap whose every Coons grid folds may be relaxed towards the
+/// Winslow grid (see the module documentation; callers try the unsmoothed layouts first).
 ///
 /// Errors ([`Error::InvalidArgument`]): caps with fewer than 2 rings, ends at one height, or
 /// a folding meridian cap.

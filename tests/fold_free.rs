@@ -329,5 +329,6 @@ fn random_partial_turns_are_fold_free_or_refused() {
         }
     }
     println!("built {built}, refused {refused:?}");
-    assert!(built >= 30, "{built}");
+    // Since the pole runs widen and the sectors follow the side's spacing, every draw builds.
+    assert!(refused.is_empty(), "built {built}, refused {refused:?}");
 }

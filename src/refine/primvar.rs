@@ -118,7 +118,14 @@ pub(crate) fn interpolate_polled<T: Primvar>(
     let (nf, ne) = (parent.num_faces(), parent.num_edges());
     let steps = nf + ne + parent.num_vertices();
     let child = &r.child;
-    let mut dst: Vec<T> = (0..child.num_vertices()).map(|_| T::zero()).collect();
+    // Filled in chunks, each polled: on a large level the first touch of its pages is a
+    // wait of its own.
+    let nc = child.num_vertices();
+    let mut dst: Vec<T> = Vec::with_capacity(nc);
+    for start in (0..nc).step_by(1 << 16) {
+        control.report(0.0)?;
+        dst.extend((start..nc.min(start + (1 << 16))).map(|_| T::zero()));
+    }
     let options = parent.options();
 
     for f in 0..nf {

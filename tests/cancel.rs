@@ -171,6 +171,62 @@ fn layout_and_fold_check_are_polled() {
     }
 }
 
+/// The longest unpolled steps of the evaluator build and uniform refinement are polled inside
+/// (#17 item 5): the evaluator's position pass (fractions strictly between 0.95 and 1) and the
+/// last level's topology of a level-3 refinement (strictly between the end of level 2 and the
+/// middle of level 3: `(4^3 - 4) / 252` and `(60 + 252) / 504`). A cancel at the first report
+/// inside either stops the call with that fraction; uncancelled, the polls change nothing
+/// (the same evaluator and refined mesh, bit for bit, as without a hook).
+#[test]
+fn position_pass_and_refined_topology_are_polled() {
+    let mesh = read_obj_file(Path::new(&example("examples/profiles/vase.obj")))
+        .unwrap()
+        .mesh;
+    let options: SubdivOptions = mesh.options().resolve();
+    let (lo, hi) = (60.0 / 252.0, (60.0 + 252.0) / 504.0);
+    let cases: [(&str, (f64, f64), Work); 2] = [
+        ("evaluator", (0.95, 1.0), {
+            // A revolution through the axis: its poles' rings of refined fragments make
+            // enough points for several polls (one per 1024 points).
+            let mut input = RevolveInput::new(vec![[0.0, 0.0], [1.0, 0.0], [1.3, 2.0], [0.0, 3.0]]);
+            input.samples_around = 64;
+            let mesh = revolve::build(&input, &Settings::default()).unwrap().mesh;
+            let options = mesh.options().resolve();
+            let plain = Evaluator::new(&mesh, &options).unwrap();
+            Box::new(move |c: &Control| {
+                let ev = Evaluator::with_control(&mesh, &options, c)?;
+                assert_eq!(ev.limit_vertices()?, plain.limit_vertices()?);
+                Ok(())
+            })
+        }),
+        ("refine", (lo, hi), {
+            let mesh = mesh.clone();
+            let order = VertexOrder::VerticesFirst;
+            let plain = refine_uniform_with(&mesh, &options, 3, order, &Control::NONE).unwrap();
+            Box::new(move |c: &Control| {
+                assert_eq!(refine_uniform_with(&mesh, &options, 3, order, c)?, plain);
+                Ok(())
+            })
+        }),
+    ];
+    for (name, (from, to), work) in cases {
+        let (control, seen) = recording(f64::INFINITY);
+        work(&control).unwrap();
+        let inside: Vec<f64> = (seen.lock().unwrap().iter().copied())
+            .filter(|&f| from < f && f < to)
+            .collect();
+        assert!(inside.len() >= 2, "{name}: {inside:?}");
+        let (control, seen) = recording(inside[0]);
+        match work(&control) {
+            Err(Error::Cancelled(m)) => {
+                assert!(m.contains(&format!("at {:.1} %", 100.0 * inside[0])), "{m}")
+            }
+            other => panic!("{name}: {other:?}"),
+        }
+        assert_eq!(*seen.lock().unwrap().last().unwrap(), inside[0], "{name}");
+    }
+}
+
 /// SIGINT during a long construction: exit code 130, a message, and no output file.
 #[test]
 fn ctrl_c_stops_the_command_line_cleanly() {

@@ -137,7 +137,8 @@ impl Evaluator {
     }
 
     /// [`Evaluator::new`] with progress, cancellation and a memory budget: `control` is
-    /// polled at every face of the build (0–95 %) and before the patches are computed, and
+    /// polled at every face of the build (0–95 %) and every thousand or so points of the
+    /// positions' pass (95–100 %), and
     /// the build is refused before allocating when [`evaluator_bytes`] is above the budget.
     ///
     /// Errors: those of [`Evaluator::new`]; [`Error::Cancelled`] and
@@ -165,8 +166,8 @@ impl Evaluator {
             evaluator_bytes(mesh),
         )?;
         let mut ev = Evaluator::topology(mesh, options, threads, &control.stage(0.0, 0.95))?;
-        control.report(0.95)?;
-        ev.update(mesh.positions());
+        ev.program
+            .run_polled(mesh.positions(), &mut ev.points, &control.stage(0.95, 1.0))?;
         control.report(1.0)?;
         Ok(ev)
     }

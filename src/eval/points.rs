@@ -13,8 +13,15 @@
 
 use glam::DVec3;
 
+use crate::control::Control;
+use crate::error::Result;
 use crate::refine::{interpolate, Primvar, Refinement};
 use crate::topology::Level;
+
+/// Fewest points a position update computes between two polls of its control (well under a
+/// millisecond of work; more on programs of over a thousand times this, to keep to about a
+/// thousand reports per call).
+const POLL_POINTS: usize = 1024;
 
 /// Local points as weighted sums of earlier points. Point `i < num_control` is control
 /// point `i`; point `num_control + k` is row `k`.
@@ -156,20 +163,40 @@ impl PointProgram {
     ///
     /// Panics as [`PointProgram::run`].
     pub fn run_into(&self, control: &[DVec3], values: &mut Vec<DVec3>) {
+        self.run_polled(control, values, &Control::NONE)
+            .expect("a control without a hook never cancels");
+    }
+
+    /// [`PointProgram::run_into`] polling `progress` every [`POLL_POINTS`] points or more:
+    /// the same values bit for bit (the same sums in the same order).
+    ///
+    /// Errors: [`crate::Error::Cancelled`] from `progress` (`values` then holds a prefix).
+    pub fn run_polled(
+        &self,
+        control: &[DVec3],
+        values: &mut Vec<DVec3>,
+        progress: &Control,
+    ) -> Result<()> {
         let nc = self.num_control as usize;
         values.clear();
         values.reserve(self.num_points());
         values.extend_from_slice(&control[..nc]);
-        let mut a = 0;
-        for &end in &self.offsets[1..] {
-            let b = end as usize;
-            let mut acc = DVec3::ZERO;
-            for (&s, &wt) in self.sources[a..b].iter().zip(&self.weights[a..b]) {
-                acc.add_weighted(&values[s as usize], wt);
+        let rows = self.offsets.len() - 1;
+        let chunk = rows.div_ceil(1000).max(POLL_POINTS);
+        for first in (0..rows).step_by(chunk) {
+            progress.report(first as f64 / rows as f64)?;
+            let mut a = self.offsets[first] as usize;
+            for &end in &self.offsets[first + 1..(first + chunk).min(rows) + 1] {
+                let b = end as usize;
+                let mut acc = DVec3::ZERO;
+                for (&s, &wt) in self.sources[a..b].iter().zip(&self.weights[a..b]) {
+                    acc.add_weighted(&values[s as usize], wt);
+                }
+                values.push(acc);
+                a = b;
             }
-            values.push(acc);
-            a = b;
         }
+        Ok(())
     }
 
     /// Append the local points of `other` (a program over the same control points) after

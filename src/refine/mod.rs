@@ -19,6 +19,7 @@ mod tests;
 use glam::DVec3;
 
 pub(crate) use output::{corners_of, creases_of_child};
+use primvar::interpolate_polled;
 pub use primvar::{interpolate, Primvar, SparseStencil};
 pub use step::{refine, Refinement, VertexOrder};
 
@@ -57,9 +58,9 @@ pub fn refine_uniform_ordered(
 }
 
 /// [`refine_uniform_ordered`] with progress, cancellation and a memory budget: `control` is
-/// polled before each level's topology and each level's positions (the work of level `k`
-/// counted as `4^k`), and the refinement refused before allocating when
-/// [`refined_bytes`] is above the budget.
+/// polled through each level's topology and positions (every thousandth face, edge or
+/// vertex of each pass; the work of level `k` counted as `4^k`), and the refinement refused
+/// before allocating when [`refined_bytes`] is above the budget.
 ///
 /// Errors: those of [`refine_uniform`]; [`Error::Cancelled`] and [`Error::LimitExceeded`]
 /// from `control`.
@@ -120,18 +121,30 @@ fn refine_base(
     // Topology takes about half a level's time, positions the other half.
     let half = |k: u32| (done(k) + done(k + 1)) / 2.0;
     for k in 1..level {
-        let r = refine(&current, order);
+        let r = step::refine_polled(
+            &current,
+            order,
+            true,
+            &control.stage(done(k - 1), half(k - 1)),
+        )?;
         control.report(half(k - 1))?;
-        positions = interpolate(&current, &r, &positions);
+        positions = interpolate_polled(
+            &current,
+            &r,
+            &positions,
+            &control.stage(half(k - 1), done(k)),
+        )?;
         current = r.child;
         control.report(done(k))?;
     }
     // The last level needs no neighbourhoods (Far's minimal topology): its creases and the
     // vertices Far sharpens from topology are read off the parent (a child vertex has its
     // parent's topology, a child edge its parent's boundary and non-manifold status).
-    let r = step::refine_last(&current, order);
+    let topology = control.stage(done(level - 1), half(level - 1));
+    let r = step::refine_polled(&current, order, false, &topology)?;
     control.report(half(level - 1))?;
-    positions = interpolate(&current, &r, &positions);
+    let last = control.stage(half(level - 1), done(level));
+    positions = interpolate_polled(&current, &r, &positions, &last)?;
     // Only the children of vertices can be sharpened from topology, as their parent was.
     let sharpened = |cv: usize| {
         r.child_vertex_parent_vertex(cv)

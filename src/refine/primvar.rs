@@ -11,6 +11,8 @@ use crate::catmark::masks::{
     VertexNeighbourhood,
 };
 use crate::catmark::Rule;
+use crate::control::Control;
+use crate::error::Result;
 use crate::options::TriangleSubdivision;
 use crate::topology::Level;
 
@@ -98,12 +100,36 @@ impl Primvar for SparseStencil {
 ///
 /// Panics if `src` has fewer values than `parent` has vertices.
 pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec<T> {
+    interpolate_polled(parent, r, src, &Control::NONE)
+        .expect("a control without a hook never cancels")
+}
+
+/// [`interpolate`] reporting to `control` through its passes over the parent's faces, edges
+/// and vertices (one step each): the same values bit for bit.
+///
+/// Errors: [`crate::Error::Cancelled`] from `control`.
+pub(crate) fn interpolate_polled<T: Primvar>(
+    parent: &Level,
+    r: &Refinement,
+    src: &[T],
+    control: &Control,
+) -> Result<Vec<T>> {
     assert!(src.len() >= parent.num_vertices());
+    let (nf, ne) = (parent.num_faces(), parent.num_edges());
+    let steps = nf + ne + parent.num_vertices();
     let child = &r.child;
-    let mut dst: Vec<T> = (0..child.num_vertices()).map(|_| T::zero()).collect();
+    // Filled in chunks, each polled: on a large level the first touch of its pages is a
+    // wait of its own.
+    let nc = child.num_vertices();
+    let mut dst: Vec<T> = Vec::with_capacity(nc);
+    for start in (0..nc).step_by(1 << 16) {
+        control.report(0.0)?;
+        dst.extend((start..nc.min(start + (1 << 16))).map(|_| T::zero()));
+    }
     let options = parent.options();
 
-    for f in 0..parent.num_faces() {
+    for f in 0..nf {
+        control.step(f, steps)?;
         let fv = parent.face_vertices(f);
         let w = face_point_weight(fv.len());
         let mut acc = T::zero();
@@ -116,7 +142,8 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
 
     let mut emask = EdgeMask::default();
     let smooth_triangles = options.triangles == TriangleSubdivision::Smooth;
-    for e in 0..parent.num_edges() {
+    for e in 0..ne {
+        control.step(nf + e, steps)?;
         let ev = parent.edge_vertices(e);
         let ef = parent.edge_faces(e);
         let cv = r.edge_child_vertex(e) as usize;
@@ -162,6 +189,7 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
     let mut vmask = VertexMask::default();
     let mut edge_sharpness: Vec<f32> = Vec::new();
     for v in 0..parent.num_vertices() {
+        control.step(nf + ne + v, steps)?;
         let cv = r.vertex_child_vertex(v) as usize;
         let ve = parent.vertex_edges(v);
         let vf = parent.vertex_faces(v);
@@ -214,5 +242,5 @@ pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec
         acc.finish(cv as u32);
         dst[cv] = acc;
     }
-    dst
+    Ok(dst)
 }

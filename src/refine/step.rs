@@ -19,6 +19,8 @@ use crate::catmark::crease::{
     subdivide_vertex_sharpness, vertex_rule, SHARPNESS_INFINITE,
 };
 use crate::catmark::Rule;
+use crate::control::Control;
+use crate::error::Result;
 
 /// Order of the child vertices in a refined level.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
@@ -121,17 +123,29 @@ impl Rows {
 
 /// Refine `parent` once (uniformly), with child vertices in `order`.
 pub fn refine(parent: &Level, order: VertexOrder) -> Refinement {
-    refine_with(parent, order, true)
+    refine_polled(parent, order, true, &Control::NONE).expect(NEVER_CANCELLED)
 }
+
+/// What a refinement without a progress hook cannot fail with.
+const NEVER_CANCELLED: &str = "a control without a hook never cancels";
 
 /// [`refine`] with only the child's face-vertices, sharpness and rules (Far's "minimal
 /// topology" for the last level): enough to interpolate into the child and to write its
 /// faces out, not to query its edges' or vertices' neighbourhoods or refine it further.
 pub(crate) fn refine_last(parent: &Level, order: VertexOrder) -> Refinement {
-    refine_with(parent, order, false)
+    refine_polled(parent, order, false, &Control::NONE).expect(NEVER_CANCELLED)
 }
 
-fn refine_with(parent: &Level, order: VertexOrder, full: bool) -> Refinement {
+/// [`refine`] (`full`) or [`refine_last`] reporting to `control` through each pass over the
+/// parent's faces and edges.
+///
+/// Errors: [`crate::Error::Cancelled`] from `control`.
+pub(crate) fn refine_polled(
+    parent: &Level,
+    order: VertexOrder,
+    full: bool,
+    control: &Control,
+) -> Result<Refinement> {
     let nv = parent.num_vertices();
     let nf = parent.num_faces();
     let ne = parent.num_edges();
@@ -163,19 +177,27 @@ fn refine_with(parent: &Level, order: VertexOrder, full: bool) -> Refinement {
         order,
         parent_counts: [nv as u32, nf as u32, ne as u32, nfv as u32],
     };
-    let child = build_faces(parent, &r, full);
+    // Rough shares of the passes' time: they only place the reports within the stage.
+    let [faces, sharpness, relations] = if full {
+        [0.25, 0.35, 0.9]
+    } else {
+        [0.5, 0.8, 0.8]
+    };
+    let child = build_faces(parent, &r, full, &control.stage(0.0, faces))?;
     r.child.face_offsets = child.0;
     r.child.face_verts = child.1;
     r.child.face_edges = child.2;
     r.child.face_holes = child.3;
-    build_edge_sharpness(parent, &mut r);
+    build_edge_sharpness(parent, &mut r, &control.stage(faces, sharpness))?;
     build_vertices(parent, &mut r);
     if full {
-        build_edge_relations(parent, &mut r);
-        build_vertex_relations(parent, &mut r);
+        let half = (sharpness + relations) / 2.0;
+        build_edge_relations(parent, &mut r, &control.stage(sharpness, half))?;
+        build_vertex_relations(parent, &mut r, &control.stage(half, relations))?;
     }
+    control.report(relations)?;
     r.child.vert_rules = child_rules(parent, &r);
-    r
+    Ok(r)
 }
 
 /// Rules of the child vertices from the parent, as Vtr propagates them: face points are
@@ -216,7 +238,12 @@ type FaceArrays = (Vec<u32>, Vec<u32>, Vec<u32>, Vec<bool>);
 
 /// Child face-vertices and face-edges (`populateFaceVerticesFromParentFaces`,
 /// `populateFaceEdgesFromParentFaces`) and hole tags.
-fn build_faces(parent: &Level, r: &Refinement, with_edges: bool) -> FaceArrays {
+fn build_faces(
+    parent: &Level,
+    r: &Refinement,
+    with_edges: bool,
+    control: &Control,
+) -> Result<FaceArrays> {
     let nfv = parent.num_face_vertices_total();
     let offsets: Vec<u32> = (0..=nfv as u32).map(|i| 4 * i).collect();
     let mut verts = vec![0u32; 4 * nfv];
@@ -227,7 +254,9 @@ fn build_faces(parent: &Level, r: &Refinement, with_edges: bool) -> FaceArrays {
         r.face_child_vertex(0),
         r.edge_child_vertex(0),
     );
-    for f in 0..parent.num_faces() {
+    let nf = parent.num_faces();
+    for f in 0..nf {
+        control.step(f, nf)?;
         let fv = parent.face_vertices(f);
         let fe = parent.face_edges(f);
         let n = fv.len();
@@ -270,11 +299,11 @@ fn build_faces(parent: &Level, r: &Refinement, with_edges: bool) -> FaceArrays {
             edges[c + ((rot + 3) & 3)] = r.edge_child_edge(fe[j_prev] as usize, corner_in_prev);
         }
     }
-    (offsets, verts, edges, holes)
+    Ok((offsets, verts, edges, holes))
 }
 
 /// Child edge sharpness (`subdivideEdgeSharpness`) and non-manifold tags.
-fn build_edge_sharpness(parent: &Level, r: &mut Refinement) {
+fn build_edge_sharpness(parent: &Level, r: &mut Refinement, control: &Control) -> Result<()> {
     let nfv = parent.num_face_vertices_total();
     let ne = parent.num_edges();
     let total = nfv + 2 * ne;
@@ -283,6 +312,7 @@ fn build_edge_sharpness(parent: &Level, r: &mut Refinement) {
     let method = parent.options.crease_method;
     let mut around: Vec<f32> = Vec::new();
     for e in 0..ne {
+        control.step(e, ne)?;
         let p = parent.edge_sharpness(e);
         let nm = parent.is_edge_non_manifold(e);
         for (j, &end) in parent.edge_vertices(e).iter().enumerate() {
@@ -306,16 +336,20 @@ fn build_edge_sharpness(parent: &Level, r: &mut Refinement) {
     }
     r.child.edge_sharpness = sharpness;
     r.child.edge_non_manifold = non_manifold;
+    Ok(())
 }
 
 /// Child edge-vertices and edge-faces (`populateEdgeVerticesFrom*`, `populateEdgeFacesFrom*`).
-fn build_edge_relations(parent: &Level, r: &mut Refinement) {
+fn build_edge_relations(parent: &Level, r: &mut Refinement, control: &Control) -> Result<()> {
     let nfv = parent.num_face_vertices_total();
     let ne = parent.num_edges();
     let total = nfv + 2 * ne;
     let mut edge_verts = Vec::with_capacity(total);
     let mut faces = Rows::with_capacity(total, 2 * nfv + 2 * parent.edge_faces.len());
+    // Faces then edges, one step each.
+    let steps = parent.num_faces() + ne;
     for f in 0..parent.num_faces() {
+        control.step(f, steps)?;
         let fe = parent.face_edges(f);
         let n = fe.len();
         for (j, &e) in fe.iter().enumerate() {
@@ -334,6 +368,7 @@ fn build_edge_relations(parent: &Level, r: &mut Refinement) {
         }
     }
     for e in 0..ne {
+        control.step(parent.num_faces() + e, steps)?;
         let ev = parent.edge_vertices(e);
         let ef = parent.edge_faces(e);
         let el = parent.edge_face_local_indices(e);
@@ -372,6 +407,7 @@ fn build_edge_relations(parent: &Level, r: &mut Refinement) {
     c.edge_face_offsets = faces.offsets;
     c.edge_faces = faces.members;
     c.edge_face_locals = faces.locals;
+    Ok(())
 }
 
 /// The three groups of child vertices, in child index order.
@@ -423,7 +459,7 @@ fn build_vertices(parent: &Level, r: &mut Refinement) {
 }
 
 /// Child vertex-faces and vertex-edges (`populateVertexFacesFrom*`, `populateVertexEdgesFrom*`).
-fn build_vertex_relations(parent: &Level, r: &mut Refinement) {
+fn build_vertex_relations(parent: &Level, r: &mut Refinement, control: &Control) -> Result<()> {
     let nv = parent.num_vertices();
     let nf = parent.num_faces();
     let ne = parent.num_edges();
@@ -437,10 +473,13 @@ fn build_vertex_relations(parent: &Level, r: &mut Refinement) {
         total,
         nfv + parent.edge_faces.len() + 2 * ne + parent.vert_edges.len(),
     );
+    // Vertices, faces and edges in the order of their groups, one step each.
+    let mut done = 0;
     for group in groups(r.order) {
         match group {
             0 => {
                 for v in 0..nv {
+                    control.step(done + v, total)?;
                     for (&pf, &k) in parent
                         .vertex_faces(v)
                         .iter()
@@ -465,6 +504,7 @@ fn build_vertex_relations(parent: &Level, r: &mut Refinement) {
             }
             1 => {
                 for f in 0..nf {
+                    control.step(done + f, total)?;
                     let n = parent.face_vertices(f).len();
                     for j in 0..n {
                         let local = if n == 4 { ((j + 2) & 3) as u32 } else { 2 };
@@ -481,10 +521,12 @@ fn build_vertex_relations(parent: &Level, r: &mut Refinement) {
             }
             _ => {
                 for e in 0..ne {
+                    control.step(done + e, total)?;
                     push_edge_vertex_rows(parent, r, e, &mut vfaces, &mut vedges);
                 }
             }
         }
+        done += [nv, nf, ne][group as usize];
     }
     let c = &mut r.child;
     c.vert_face_offsets = vfaces.offsets;
@@ -493,6 +535,7 @@ fn build_vertex_relations(parent: &Level, r: &mut Refinement) {
     c.vert_edge_offsets = vedges.offsets;
     c.vert_edges = vedges.members;
     c.vert_edge_locals = vedges.locals;
+    Ok(())
 }
 
 /// Faces and edges around the child vertex of parent edge `e`

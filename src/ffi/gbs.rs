@@ -45,35 +45,14 @@ pub unsafe extern "C" fn profsubd_gbs_refine(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ffi::error::last_error;
     use crate::ffi::mesh::profsubd_mesh_free;
-    use crate::ffi::message::profsubd_last_error_message;
-    use crate::mesh::{Crease, Mesh, MeshParts};
-    use glam::DVec3;
-    use std::ffi::CStr;
+    use crate::mesh::Crease;
+    use crate::test_support::unit_cube;
 
-    fn message() -> String {
-        unsafe { CStr::from_ptr(profsubd_last_error_message()) }
-            .to_string_lossy()
-            .into_owned()
-    }
-
+    /// The unit cube with `creases`, as a C handle.
     fn cube(creases: Vec<Crease>) -> *mut profsubd_mesh {
-        let positions = (0..8)
-            .map(|i| DVec3::new((i & 1) as f64, ((i >> 1) & 1) as f64, (i >> 2) as f64))
-            .collect();
-        let face_indices = vec![
-            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
-        ];
-        new_mesh_handle(
-            Mesh::from_parts(MeshParts {
-                positions,
-                face_sizes: vec![4; 6],
-                face_indices,
-                creases,
-                ..Default::default()
-            })
-            .unwrap(),
-        )
+        new_mesh_handle(unit_cube(creases))
     }
 
     #[test]
@@ -100,7 +79,7 @@ mod tests {
             (4, 1.0, 9, PROFSUBD_ERROR_INVALID_ARGUMENT, "level"),
         ] {
             assert_eq!(call(mesh, order, tension, level, &mut out), status);
-            assert!(message().contains(says), "{}", message());
+            assert!(last_error().contains(says), "{}", last_error());
             assert_eq!(out, sentinel, "output untouched on error");
         }
         assert_eq!(
@@ -120,12 +99,16 @@ mod tests {
             call(creased, 4, 1.0, 1, &mut out),
             PROFSUBD_ERROR_INVALID_MESH
         );
-        assert!(message().contains("infinitely sharp"), "{}", message());
+        assert!(
+            last_error().contains("infinitely sharp"),
+            "{}",
+            last_error()
+        );
         assert_eq!(out, sentinel);
         unsafe { profsubd_mesh_free(creased) };
         for (order, faces) in [(4, 24), (3, 26)] {
             assert_eq!(call(mesh, order, 0.5, 1, &mut out), PROFSUBD_OK);
-            assert_eq!(message(), "");
+            assert_eq!(last_error(), "");
             let refined = unsafe { mesh_arg(out, "out") }.unwrap();
             assert_eq!(refined.num_faces(), faces, "order {order}");
             unsafe { profsubd_mesh_free(out) };

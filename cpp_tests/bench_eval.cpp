@@ -8,7 +8,9 @@
 // each side, untimed, for callgrind; `--memory`: the heap a built evaluator holds on each side), or `bench_eval --scale [--scale-min D] [--scale-max E]
 // [--scale-only FAMILY-PREFIX]`: build, position
 // update, evaluation and refinement at 10^D..10^E faces (3 and 6 by default) on random and
-// shape-derived meshes (scripts/plot_scale.py plots its rows).
+// shape-derived meshes (scripts/plot_scale.py plots its rows), each side in its own child processes
+// with its peak resident memory per stage (at 10^6 faces run it under `prlimit --as=BYTES`, so
+// that an overrun fails a child instead of waking the out-of-memory killer).
 //
 // P1: 10^6 random (face, u, v) -> position + du + dv.
 //     profsubd_evaluator_evaluate (one batch call) vs Bfr::Surface<double> with its cache
@@ -456,11 +458,232 @@ profsubd_test::OsdShape random_torus(int target, bool creases, uint64_t seed) {
     return out;
 }
 
+// Peak resident memory since the last reset_peak_rss() (VmHWM of /proc/self/status), MiB.
+double peak_rss_mib() {
+    FILE *f = std::fopen("/proc/self/status", "r");
+    long kb = -1;
+    char line[256];
+    while (f && std::fgets(line, sizeof line, f))
+        if (std::sscanf(line, "VmHWM: %ld kB", &kb) == 1) break;
+    if (f) std::fclose(f);
+    return kb / 1024.0;
+}
+
+// Starts a new peak (writing 5 to clear_refs resets VmHWM to the current resident size), after
+// handing freed heap back to the system so that a stage's peak does not include the last one's.
+void reset_peak_rss() {
+    malloc_trim(0);
+    FILE *f = std::fopen("/proc/self/clear_refs", "w");
+    if (f) {
+        std::fputs("5", f);
+        std::fclose(f);
+    }
+}
+
+// One side's --scale results: processor times (seconds) and the peak resident memory of each
+// stage (MiB, whole process); NaN where the stage did not run or its process failed.
+struct SideResult {
+    double build = NAN, update = NAN, eval = NAN, refine = NAN;
+    double mem_build = NAN, mem_update = NAN, mem_eval = NAN, mem_refine = NAN;
+    double checksum = 0;
+
+    // The stages `part` measured, taken over.
+    void take(const SideResult &part) {
+        double *to[] = {&build, &update, &eval, &refine, &mem_build, &mem_update, &mem_eval, &mem_refine};
+        const double *from[] = {&part.build,     &part.update,     &part.eval,     &part.refine,
+                                &part.mem_build, &part.mem_update, &part.mem_eval, &part.mem_refine};
+        for (int i = 0; i < 8; ++i)
+            if (!std::isnan(*from[i])) *to[i] = *from[i];
+        checksum += part.checksum;
+    }
+};
+
+// The peak of a stage, printed as it ends (a `mem` line: if a later stage runs out of memory,
+// the last line says how far it got) and reset for the next one.
+double stage_peak(const char *family, int faces, const char *side, const char *stage) {
+    double peak = peak_rss_mib();
+    std::printf("mem %-14s %9d %-8s %-8s peak RSS %9.1f MiB\n", family, faces, side, stage, peak);
+    std::fflush(stdout);
+    reset_peak_rss();
+    return peak;
+}
+
+// Runs f in a child process and adds what it measured to `out`; false if the child failed
+// (killed, or out of memory under `prlimit --as`). Each part of a --scale row runs in its own
+// process, so that its peak memory is its own, all of it is returned before the next part
+// starts, and a part that runs out of memory loses only its own figures.
+bool in_child(const char *what, const std::function<SideResult()> &f, SideResult *out) {
+    std::fflush(stdout);
+    int fd[2];
+    if (pipe(fd) != 0) return false;
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(fd[0]);
+        reset_peak_rss();
+        SideResult r = f();
+        bool ok = write(fd[1], &r, sizeof r) == (ssize_t)sizeof r;
+        std::fflush(stdout);
+        _exit(ok ? 0 : 1);
+    }
+    close(fd[1]);
+    SideResult r;
+    bool ok = pid > 0 && read(fd[0], &r, sizeof r) == (ssize_t)sizeof r;
+    close(fd[0]);
+    int status = 0;
+    if (pid > 0) waitpid(pid, &status, 0);
+    ok = ok && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (ok)
+        out->take(r);
+    else if (pid > 0 && WIFSIGNALED(status))
+        std::printf("failed %s: killed by signal %d (the last mem line is the last stage it finished)\n", what,
+                    WTERMSIG(status));
+    else
+        std::printf("failed %s (the last mem line is the last stage it finished)\n", what);
+    return ok;
+}
+
+// Far's counterpart of a position update, level by level, as Osd's users apply it (and as
+// osd_patches.cpp does): each adaptive level's stencils from the level before, then the
+// PatchTable's local points from the refined ones, in double. The table factorized to the
+// control points that the benchmark mesh uses (far_update_stencils) grows with every adaptive
+// level: building it took the 10^6-face scale run past 19.8 GB.
+struct FarLevelUpdate {
+    std::unique_ptr<Far::PatchTable> table;  // owns the local-point stencils
+    std::unique_ptr<Far::StencilTableReal<double> const> refined;
+    const Far::StencilTableReal<double> *local = nullptr;
+    std::vector<int> level_sizes;  // refined vertices of levels 1, 2, ...
+    int ncoarse = 0;
+    std::vector<profsubd_test::FarPoint> points;  // control, each level's, local points
+
+    explicit FarLevelUpdate(const profsubd_test::OsdShape &shape) {
+        Far::PatchTableFactory::Options po;
+        po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+        po.SetPatchPrecision<double>();
+        auto r = profsubd_test::build_refiner(shape);
+        r->RefineAdaptive(po.GetRefineAdaptiveOptions());
+        table.reset(Far::PatchTableFactory::Create(*r, po));
+        Far::StencilTableFactoryReal<double>::Options so;
+        so.generateOffsets = true;
+        so.generateIntermediateLevels = true;
+        so.factorizeIntermediateLevels = false;
+        refined.reset(Far::StencilTableFactoryReal<double>::Create(*r, so));
+        local = table->GetLocalPointStencilTable<double>();
+        ncoarse = r->GetLevel(0).GetNumVertices();
+        for (int k = 1; k <= r->GetMaxLevel(); ++k) level_sizes.push_back(r->GetLevel(k).GetNumVertices());
+        points.resize(ncoarse + refined->GetNumStencils() + (local ? local->GetNumStencils() : 0));
+    }
+
+    void update(const std::vector<double> &x) {
+        for (int v = 0; v < ncoarse; ++v)
+            for (int d = 0; d < 3; ++d) points[v].p[d] = x[3 * v + d];
+        profsubd_test::FarPoint *out = points.data() + ncoarse;  // stencil i writes out[i]
+        int first = 0, src = 0;
+        for (int n : level_sizes) {
+            refined->UpdateValues(points.data() + src, out, first, first + n);  // level k-1 from 0
+            src = ncoarse + first;
+            first += n;
+        }
+        if (local && local->GetNumStencils() > 0) local->UpdateValues(points.data(), out + first);
+    }
+};
+
+// What one --scale row measures, shared by the parts that run in child processes.
+struct ScaleCase {
+    const char *family;
+    const profsubd_test::OsdShape &shape;
+    const profsubd_mesh *mesh;
+    const profsubd_options *opts;  // one thread
+    const profsubd_test::FacePoints &pts;
+    const std::vector<double> &moved;  // the positions of the update
+    int level, reps;
+};
+
+// profsubd's evaluator: build, update, evaluation.
+SideResult profsubd_evaluator_part(const ScaleCase &c) {
+    SideResult r;
+    const int nf = c.shape.num_faces(), n = (int)c.pts.faces.size();
+    std::vector<double> P(3 * n), DU(3 * n), DV(3 * n);
+    profsubd_evaluator *ev = nullptr;
+    r.build = best(c.reps, [&] {
+        if (ev) profsubd_evaluator_free(ev);
+        ev = nullptr;
+        if (profsubd_evaluator_new(c.mesh, c.opts, &ev) != PROFSUBD_OK)
+            std::fprintf(stderr, "build: %s\n", profsubd_last_error_message());
+    });
+    r.mem_build = stage_peak(c.family, nf, "profsubd", "build");
+    if (!ev) std::exit(1);
+    profsubd_evaluator_set_threads(ev, 1);
+    r.update = best(c.reps, [&] { profsubd_evaluator_update_positions(ev, c.moved.data(), c.shape.num_vertices()); });
+    r.mem_update = stage_peak(c.family, nf, "profsubd", "update");
+    r.eval = best(c.reps, [&] {
+        if (profsubd_evaluator_evaluate(ev, c.pts.faces.data(), c.pts.us.data(), c.pts.vs.data(), n, P.data(),
+                                        DU.data(), DV.data()) != PROFSUBD_OK)
+            std::fprintf(stderr, "evaluate: %s\n", profsubd_last_error_message());
+    });
+    r.mem_eval = stage_peak(c.family, nf, "profsubd", "evaluate");
+    r.checksum = P[0];
+    profsubd_evaluator_free(ev);
+    return r;
+}
+
+// profsubd's uniform refinement.
+SideResult profsubd_refine_part(const ScaleCase &c) {
+    SideResult r;
+    r.refine = best(c.reps, [&] {
+        profsubd_mesh *out = nullptr;
+        if (profsubd_refine_uniform(c.mesh, c.opts, c.level, &out) != PROFSUBD_OK)
+            std::fprintf(stderr, "refine: %s\n", profsubd_last_error_message());
+        profsubd_mesh_free(out);
+    });
+    r.mem_refine = stage_peak(c.family, c.shape.num_faces(), "profsubd", "refine");
+    return r;
+}
+
+// Far's adaptive refinement + PatchTable + PatchMap with points, and evaluation through them.
+SideResult far_evaluator_part(const ScaleCase &c) {
+    SideResult r;
+    const int nf = c.shape.num_faces(), n = (int)c.pts.faces.size();
+    std::vector<double> P(3 * n), DU(3 * n), DV(3 * n);
+    std::unique_ptr<Far::TopologyRefiner> adaptive;
+    std::unique_ptr<Far::PatchTable> table;
+    std::unique_ptr<Far::PatchMap> pmap;
+    std::vector<profsubd_test::FarPoint> pp;
+    r.build = best(c.reps, [&] { far_build(c.shape, adaptive, table, pmap, pp); });
+    std::printf("far %-14s %9d adaptive refinement: %d levels, %d vertices; %d local points\n", c.family, nf,
+                adaptive->GetMaxLevel() + 1, adaptive->GetNumVerticesTotal(), table->GetNumLocalPoints());
+    r.mem_build = stage_peak(c.family, nf, "Far", "build");
+    r.eval = best(c.reps, [&] { far_evaluate(*table, *pmap, pp, c.pts, P.data(), DU.data(), DV.data()); });
+    r.mem_eval = stage_peak(c.family, nf, "Far", "evaluate");
+    r.checksum = P[0];
+    return r;
+}
+
+// Far's position update (its own adaptive refinement, PatchTable and level-by-level stencils).
+SideResult far_update_part(const ScaleCase &c) {
+    SideResult r;
+    FarLevelUpdate far(c.shape);
+    r.update = best(c.reps, [&] { far.update(c.moved); });
+    r.mem_update = stage_peak(c.family, c.shape.num_faces(), "Far", "update");
+    r.checksum = far.points.back().p[0];
+    return r;
+}
+
+// Far's uniform refinement.
+SideResult far_refine_part(const ScaleCase &c) {
+    SideResult r;
+    int counts[2];
+    r.refine = best(c.reps, [&] { r.checksum += far_refine(c.shape, c.level, counts); });
+    r.mem_refine = stage_peak(c.family, c.shape.num_faces(), "Far", "refine");
+    return r;
+}
+
 // --scale: build, position update, evaluation of 2 x 10^5 random points and uniform refinement
 // to level 1 on both sides, one thread each, at about 10^3 .. 10^max_exp faces, for four
 // families: random tori with and without semi-sharp creases, and catmark_car refined by Far
-// with its semi-sharp creases (kept at sharpness 5 at every level) and without them. One
-// `row` line per mesh (scripts/plot_scale.py reads them).
+// with its semi-sharp creases (kept at sharpness 5 at every level) and without them. Each
+// side's evaluator, update (Far) and refinement run in child processes, with the peak memory
+// of every stage (`mem` lines). One `row` line per mesh (scripts/plot_scale.py reads them),
+// `nan` where a part failed.
 void scale(int min_exp, int max_exp, const std::string &only) {
     use_thread_cpu = true;
     profsubd_test::OsdShape car;
@@ -469,10 +692,11 @@ void scale(int min_exp, int max_exp, const std::string &only) {
         std::fprintf(stderr, "bench_eval: %s\n", err.c_str());
         return;
     }
+    auto runs = [&](const std::string &family) { return family.compare(0, only.size(), only) == 0; };
     // The car refined k times with its creases kept, for k = 0, 1, 3, 5 (1,575, 6,300,
-    // 100,800, 1,612,800 quads): the sizes nearest the powers of ten.
+    // 100,800, 1,612,800 quads): the sizes nearest the powers of ten (only if a car family runs).
     std::vector<profsubd_test::OsdShape> cars;
-    for (int k = 0; (int)cars.size() + 3 <= max_exp; ++k) {
+    for (int k = 0; (runs("car_creased") || runs("car_smooth")) && (int)cars.size() + 3 <= max_exp; ++k) {
         if (k == 0 || k == 1 || k == 3 || k == 5) cars.push_back(car);
         if (k == 5) break;
         car = refine_once(car, true);
@@ -500,92 +724,51 @@ void scale(int min_exp, int max_exp, const std::string &only) {
             smooth.crease_sharpness.clear();
             cases.push_back({"car_smooth", smooth});
         }
-        for (Case &c : cases) {
-            if (c.family.compare(0, only.size(), only) != 0) continue;
-            const profsubd_test::OsdShape &shape = c.shape;
+        for (Case &k : cases) {
+            if (!runs(k.family)) continue;
+            const profsubd_test::OsdShape &shape = k.shape;
+            const char *family = k.family.c_str();
             const int nf = shape.num_faces();
-            const int reps = nf >= 10000 ? 1 : 3;
             profsubd_test::MeshPtr mesh = profsubd_test::new_mesh_capi(shape, &err);
             if (!mesh) {
-                std::fprintf(stderr, "bench_eval: %s: %s\n", c.family.c_str(), err.c_str());
+                std::fprintf(stderr, "bench_eval: %s: %s\n", family, err.c_str());
                 continue;
             }
             profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
             profsubd_options_set_threads(opts, 1);
             profsubd_test::FacePoints pts = profsubd_test::random_face_points(N, nf, 7);
-            std::vector<double> P(3 * N), DU(3 * N), DV(3 * N);
             std::vector<double> moved(shape.positions.size());
             for (size_t i = 0; i < moved.size(); ++i) moved[i] = 1.01 * shape.positions[i] + 0.001 * (i % 7);
-            double checksum = 0;
-
-            // profsubd: build, update, evaluate, then free before Far's side.
-            profsubd_evaluator *ev = nullptr;
-            double t_build = best(reps, [&] {
-                if (ev) profsubd_evaluator_free(ev);
-                ev = nullptr;
-                if (profsubd_evaluator_new(mesh.get(), opts, &ev) != PROFSUBD_OK)
-                    std::fprintf(stderr, "build: %s\n", profsubd_last_error_message());
-            });
-            if (!ev) {
-                profsubd_options_free(opts);
-                continue;
-            }
-            profsubd_evaluator_set_threads(ev, 1);
-            double t_update = best(reps, [&] {
-                profsubd_evaluator_update_positions(ev, moved.data(), shape.num_vertices());
-            });
-            double t_eval = best(reps, [&] {
-                if (profsubd_evaluator_evaluate(ev, pts.faces.data(), pts.us.data(), pts.vs.data(), N, P.data(),
-                                                DU.data(), DV.data()) != PROFSUBD_OK)
-                    std::fprintf(stderr, "evaluate: %s\n", profsubd_last_error_message());
-            });
-            checksum += P[0];
-            profsubd_evaluator_free(ev);
-            double t_refine = best(reps, [&] {
-                profsubd_mesh *out = nullptr;
-                if (profsubd_refine_uniform(mesh.get(), opts, level, &out) != PROFSUBD_OK)
-                    std::fprintf(stderr, "refine: %s\n", profsubd_last_error_message());
-                profsubd_mesh_free(out);
-            });
-
-            // Far: adaptive refinement + PatchTable + PatchMap, stencils, evaluation, refinement.
-            double t_far_build, t_far_eval, t_far_update;
-            {
-                std::unique_ptr<Far::TopologyRefiner> adaptive;
-                std::unique_ptr<Far::PatchTable> table;
-                std::unique_ptr<Far::PatchMap> pmap;
-                std::vector<profsubd_test::FarPoint> pp;
-                t_far_build = best(reps, [&] { far_build(shape, adaptive, table, pmap, pp); });
-                t_far_eval = best(reps, [&] { far_evaluate(*table, *pmap, pp, pts, P.data(), DU.data(), DV.data()); });
-                checksum += P[0];
-            }
-            {
-                auto stencils = far_update_stencils(shape);
-                std::vector<profsubd_test::FarPoint> src(shape.num_vertices()), dst(stencils->GetNumStencils());
-                t_far_update = best(reps, [&] {
-                    for (int v = 0; v < shape.num_vertices(); ++v)
-                        for (int d = 0; d < 3; ++d) src[v].p[d] = moved[3 * v + d];
-                    stencils->UpdateValues(src.data(), dst.data());
-                });
-                checksum += dst.empty() ? 0 : dst.back().p[0];
-            }
-            int counts[2];
-            double t_far_refine = best(reps, [&] { checksum += far_refine(shape, level, counts); });
+            const ScaleCase c{family, shape, mesh.get(), opts, pts, moved, level, nf >= 10000 ? 1 : 3};
+            std::printf("mem %-14s %9d %-8s %-8s RSS %9.1f MiB (the mesh and points, before the children)\n", family,
+                        nf, "both", "start", rss_kb() / 1024.0);
+            SideResult ps, far;
+            in_child("profsubd evaluator", [&] { return profsubd_evaluator_part(c); }, &ps);
+            in_child("profsubd refinement", [&] { return profsubd_refine_part(c); }, &ps);
+            in_child("Far build + evaluation", [&] { return far_evaluator_part(c); }, &far);
+            in_child("Far update", [&] { return far_update_part(c); }, &far);
+            in_child("Far refinement", [&] { return far_refine_part(c); }, &far);
+            profsubd_options_free(opts);
             std::printf("row %-12s %9d | %9.1f %9.1f %6.2f | %8.2f %8.2f %6.2f | %8.1f %8.1f %6.2f | %8.1f %8.1f %6.2f | "
                         "%7.2f %7.2f\n",
-                        c.family.c_str(), nf, 1e3 * t_build, 1e3 * t_far_build, t_build / t_far_build, 1e3 * t_update,
-                        1e3 * t_far_update, t_update / t_far_update, 1e3 * t_eval, 1e3 * t_far_eval, t_eval / t_far_eval,
-                        1e3 * t_refine, 1e3 * t_far_refine, t_refine / t_far_refine, 1e6 * t_build / nf,
-                        1e6 * t_far_build / nf);
+                        family, nf, 1e3 * ps.build, 1e3 * far.build, ps.build / far.build, 1e3 * ps.update,
+                        1e3 * far.update, ps.update / far.update, 1e3 * ps.eval, 1e3 * far.eval, ps.eval / far.eval,
+                        1e3 * ps.refine, 1e3 * far.refine, ps.refine / far.refine, 1e6 * ps.build / nf,
+                        1e6 * far.build / nf);
+            std::printf("peak %-11s %9d | build %8.1f %8.1f | update %8.1f %8.1f | evaluate %8.1f %8.1f | refine %8.1f "
+                        "%8.1f MiB (profsubd, Far)\n",
+                        family, nf, ps.mem_build, far.mem_build, ps.mem_update, far.mem_update, ps.mem_eval,
+                        far.mem_eval, ps.mem_refine, far.mem_refine);
             std::fflush(stdout);
-            if (checksum == 12345.678) std::printf("(checksum)\n");
-            profsubd_options_free(opts);
+            if (ps.checksum + far.checksum == 12345.678) std::printf("(checksum)\n");
         }
     }
     std::printf("columns: build = evaluator build vs Far adaptive refinement + PatchTable + PatchMap (with points);\n"
-                "upd = position update vs Far refinement + local-point stencils (double, UpdateValues; target <= 1.0); eval = %d\n"
-                "random points vs PatchTable + PatchMap; ref = uniform refinement to level %d vs TopologyRefiner +\n"
-                "PrimvarRefiner; us/f = build microseconds per face\n",
+                "upd = position update vs Far refinement + local-point stencils applied level by level (double,\n"
+                "UpdateValues; target <= 1.0); eval = %d random points vs PatchTable + PatchMap; ref = uniform\n"
+                "refinement to level %d vs TopologyRefiner + PrimvarRefiner; us/f = build microseconds per face;\n"
+                "peak = the stage's peak resident memory (VmHWM) of its child process, which starts as a copy of\n"
+                "this one (the `start` RSS); nan = the part failed (its `failed` line)\n",
                 N, level);
 }
 

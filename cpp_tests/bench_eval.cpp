@@ -6,7 +6,7 @@
 // `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [--memory] [mesh.obj...]`
 // (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
 // each side, untimed, for callgrind; `--memory`: the heap a built evaluator holds on each side), or `bench_eval --scale [--scale-min D] [--scale-max E]
-// [--scale-only FAMILY-PREFIX]`: build, position
+// [--scale-only FAMILY-PREFIX] [--scale-skip PARTS]`: build, position
 // update, evaluation and refinement at 10^D..10^E faces (3 and 6 by default) on random and
 // shape-derived meshes (scripts/plot_scale.py plots its rows), each side in its own child processes
 // with its peak resident memory per stage (at 10^6 faces run it under `prlimit --as=BYTES`, so
@@ -184,6 +184,17 @@ void append_shape(profsubd_test::OsdShape &a, const profsubd_test::OsdShape &b) 
     a.corner_sharpness.insert(a.corner_sharpness.end(), b.corner_sharpness.begin(), b.corner_sharpness.end());
 }
 
+// --scale prints the resident memory after each step of Far's builds, so that a build that runs
+// out of memory shows the step it reached.
+bool print_far_steps = false;
+
+void far_step(const char *what) {
+    if (print_far_steps) {
+        std::printf("  Far: %-40s RSS %9.1f MiB\n", what, rss_kb() / 1024.0);
+        std::fflush(stdout);
+    }
+}
+
 // Far's counterpart of the evaluator build: adaptive refinement + PatchTable + PatchMap, with
 // the refined and local points' positions.
 void far_build(const profsubd_test::OsdShape &shape, std::unique_ptr<Far::TopologyRefiner> &adaptive,
@@ -193,11 +204,14 @@ void far_build(const profsubd_test::OsdShape &shape, std::unique_ptr<Far::Topolo
     Far::PatchTableFactory::Options po;
     po.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
     adaptive->RefineAdaptive(po.GetRefineAdaptiveOptions());
+    far_step("build: adaptive refinement");
     table.reset(Far::PatchTableFactory::Create(*adaptive, po));
+    far_step("build: PatchTable");
     pmap.reset(new Far::PatchMap(*table));
     int nref = adaptive->GetNumVerticesTotal();
     pp = profsubd_test::refine_points(*adaptive, shape.positions, table->GetNumLocalPoints());
     if (table->GetNumLocalPoints() > 0) table->ComputeLocalPointValues(pp.data(), pp.data() + nref);
+    far_step("build: PatchMap, refined and local points");
 }
 
 // Far's counterpart of a position update: refinement + local-point stencils in one table.
@@ -508,11 +522,20 @@ double stage_peak(const char *family, int faces, const char *side, const char *s
     return peak;
 }
 
+// The --scale parts not to run (--scale-skip: any of profsubd-evaluator, profsubd-refine,
+// far-evaluator, far-update, far-refine, comma-separated), e.g. a side known not to fit in memory.
+std::string scale_skip;
+
 // Runs f in a child process and adds what it measured to `out`; false if the child failed
 // (killed, or out of memory under `prlimit --as`). Each part of a --scale row runs in its own
 // process, so that its peak memory is its own, all of it is returned before the next part
 // starts, and a part that runs out of memory loses only its own figures.
 bool in_child(const char *what, const std::function<SideResult()> &f, SideResult *out) {
+    std::string name(what);
+    if (scale_skip.find(name) != std::string::npos) {
+        std::printf("skipped %s (--scale-skip)\n", what);
+        return false;
+    }
     std::fflush(stdout);
     int fd[2];
     if (pipe(fd) != 0) return false;
@@ -530,13 +553,15 @@ bool in_child(const char *what, const std::function<SideResult()> &f, SideResult
     bool ok = pid > 0 && read(fd[0], &r, sizeof r) == (ssize_t)sizeof r;
     close(fd[0]);
     int status = 0;
-    if (pid > 0) waitpid(pid, &status, 0);
+    struct rusage ru = {};
+    if (pid > 0) wait4(pid, &status, 0, &ru);
     ok = ok && WIFEXITED(status) && WEXITSTATUS(status) == 0;
     if (ok)
         out->take(r);
     else if (pid > 0 && WIFSIGNALED(status))
-        std::printf("failed %s: killed by signal %d (the last mem line is the last stage it finished)\n", what,
-                    WTERMSIG(status));
+        std::printf("failed %s: killed by signal %d at peak RSS %.1f MiB (the last mem line is the last stage it "
+                    "finished)\n",
+                    what, WTERMSIG(status), ru.ru_maxrss / 1024.0);
     else
         std::printf("failed %s (the last mem line is the last stage it finished)\n", what);
     return ok;
@@ -545,8 +570,8 @@ bool in_child(const char *what, const std::function<SideResult()> &f, SideResult
 // Far's counterpart of a position update, level by level, as Osd's users apply it (and as
 // osd_patches.cpp does): each adaptive level's stencils from the level before, then the
 // PatchTable's local points from the refined ones, in double. The table factorized to the
-// control points that the benchmark mesh uses (far_update_stencils) grows with every adaptive
-// level: building it took the 10^6-face scale run past 19.8 GB.
+// control points that the benchmark mesh uses (far_update_stencils) holds more weights: on the
+// 101,647-face random creased torus this stage peaked at 3,004 MiB with it, 2,390 MiB without.
 struct FarLevelUpdate {
     std::unique_ptr<Far::PatchTable> table;  // owns the local-point stencils
     std::unique_ptr<Far::StencilTableReal<double> const> refined;
@@ -561,12 +586,15 @@ struct FarLevelUpdate {
         po.SetPatchPrecision<double>();
         auto r = profsubd_test::build_refiner(shape);
         r->RefineAdaptive(po.GetRefineAdaptiveOptions());
+        far_step("update: adaptive refinement");
         table.reset(Far::PatchTableFactory::Create(*r, po));
+        far_step("update: PatchTable (double)");
         Far::StencilTableFactoryReal<double>::Options so;
         so.generateOffsets = true;
         so.generateIntermediateLevels = true;
         so.factorizeIntermediateLevels = false;
         refined.reset(Far::StencilTableFactoryReal<double>::Create(*r, so));
+        far_step("update: refinement stencils");
         local = table->GetLocalPointStencilTable<double>();
         ncoarse = r->GetLevel(0).GetNumVertices();
         for (int k = 1; k <= r->GetMaxLevel(); ++k) level_sizes.push_back(r->GetLevel(k).GetNumVertices());
@@ -686,6 +714,7 @@ SideResult far_refine_part(const ScaleCase &c) {
 // `nan` where a part failed.
 void scale(int min_exp, int max_exp, const std::string &only) {
     use_thread_cpu = true;
+    print_far_steps = true;
     profsubd_test::OsdShape car;
     std::string err;
     if (!profsubd_test::read_osd_shape(profsubd_test::osd_shapes_dir() + "/catmark_car.obj", &car, &err)) {
@@ -743,11 +772,11 @@ void scale(int min_exp, int max_exp, const std::string &only) {
             std::printf("mem %-14s %9d %-8s %-8s RSS %9.1f MiB (the mesh and points, before the children)\n", family,
                         nf, "both", "start", rss_kb() / 1024.0);
             SideResult ps, far;
-            in_child("profsubd evaluator", [&] { return profsubd_evaluator_part(c); }, &ps);
-            in_child("profsubd refinement", [&] { return profsubd_refine_part(c); }, &ps);
-            in_child("Far build + evaluation", [&] { return far_evaluator_part(c); }, &far);
-            in_child("Far update", [&] { return far_update_part(c); }, &far);
-            in_child("Far refinement", [&] { return far_refine_part(c); }, &far);
+            in_child("profsubd-evaluator", [&] { return profsubd_evaluator_part(c); }, &ps);
+            in_child("profsubd-refine", [&] { return profsubd_refine_part(c); }, &ps);
+            in_child("far-evaluator", [&] { return far_evaluator_part(c); }, &far);
+            in_child("far-update", [&] { return far_update_part(c); }, &far);
+            in_child("far-refine", [&] { return far_refine_part(c); }, &far);
             profsubd_options_free(opts);
             std::printf("row %-12s %9d | %9.1f %9.1f %6.2f | %8.2f %8.2f %6.2f | %8.1f %8.1f %6.2f | %8.1f %8.1f %6.2f | "
                         "%7.2f %7.2f\n",
@@ -794,6 +823,8 @@ int main(int argc, char **argv) {
             scale_min = std::atoi(argv[++i]);
         else if (std::string(argv[i]) == "--scale-only" && i + 1 < argc)
             scale_only = argv[++i];
+        else if (std::string(argv[i]) == "--scale-skip" && i + 1 < argc)
+            scale_skip = argv[++i];
         else
             paths.push_back(argv[i]);
     }

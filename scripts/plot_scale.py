@@ -7,9 +7,11 @@
 Reads the `row` lines (family, faces, then build / update / evaluation / refinement times in
 ms for profsubd and OpenSubdiv, with ratios) and draws four panels, log-log: build, position
 update and uniform refinement in microseconds per face, evaluation in nanoseconds per point
-(the same number of random points at every size, read from the header line). Linear cost is a flat line. Installs matplotlib with pip
-if it is missing.
+(the same number of random points at every size, read from the header line). Linear cost is a
+flat line. A part that failed (out of memory under `prlimit`) or was skipped is `nan` and left
+out of the plot. Installs matplotlib with pip if it is missing.
 """
+import math
 import subprocess
 import sys
 
@@ -43,6 +45,8 @@ def read_rows(path):
                 continue  # the column header
             family, faces = cells[1], int(cells[2])
             v = [float(x) for x in cells[3:]]
+            if all(math.isnan(x) for x in v):
+                continue  # every part of the row failed or was skipped
             times = {
                 "build": (v[0], v[1]),
                 "update": (v[3], v[4]),

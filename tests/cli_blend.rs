@@ -1,23 +1,19 @@
 //! `profsubd blend`: a junction from JSON to a fitted OBJ and its data points, `--gbs-level`,
 //! and bad input refused with a message and nothing written.
 
-use std::process::Command;
+#[path = "support/cli.rs"]
+mod cli;
 
-fn blend(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .arg("blend")
-        .args(args)
-        .output()
-        .unwrap()
-}
+use cli::{assert_refused, example_file, profsubd, stdout, write_input};
 
 #[test]
 fn writes_the_mesh_and_reports_the_surface_distance() {
     let dir = tempfile::tempdir().unwrap();
-    let input = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/blends/tee.json");
+    let input = example_file("blends", "tee", "json");
     let (obj, targets) = (dir.path().join("t.obj"), dir.path().join("t.txt"));
-    let out = blend(&[
-        input,
+    let out = profsubd(&[
+        "blend",
+        input.to_str().unwrap(),
         "-o",
         obj.to_str().unwrap(),
         "--targets",
@@ -26,17 +22,16 @@ fn writes_the_mesh_and_reports_the_surface_distance() {
         "2",
     ]);
     assert!(out.status.success(), "{out:?}");
-    let stdout = String::from_utf8(out.stdout).unwrap();
+    let text = stdout(&out);
     assert!(
-        stdout.contains("distance between the GBS and Catmull-Clark limit surfaces"),
-        "{stdout}"
+        text.contains("distance between the GBS and Catmull-Clark limit surfaces"),
+        "{text}"
     );
     let mesh = profsubd::io::obj::read_obj_file(&obj).unwrap().mesh;
     // Level 2 has 16 quads per level-0 quad (and per N-gon side): 4 × level 1's.
-    let level1 =
-        profsubd::io::obj::read_obj_file(std::path::Path::new(&input.replace(".json", ".obj")))
-            .unwrap()
-            .mesh;
+    let level1 = profsubd::io::obj::read_obj_file(&example_file("blends", "tee", "obj"))
+        .unwrap()
+        .mesh;
     assert_eq!(mesh.num_faces(), 4 * level1.num_faces());
     let lines = std::fs::read_to_string(&targets).unwrap().lines().count();
     assert_eq!(lines, mesh.num_vertices());
@@ -66,15 +61,20 @@ fn reported_valences(stdout: &str) -> [Vec<(usize, usize)>; 2] {
 fn reports_valences_and_none_is_the_pipe_count() {
     let dir = tempfile::tempdir().unwrap();
     for (name, pipes) in [("six_way", 6), ("six_way_k3_cos", 6), ("tee", 3)] {
-        let input = format!("{}/examples/blends/{name}.json", env!("CARGO_MANIFEST_DIR"));
+        let input = example_file("blends", name, "json");
         let obj = dir.path().join(format!("{name}.obj"));
-        let out = blend(&[&input, "-o", obj.to_str().unwrap()]);
+        let out = profsubd(&[
+            "blend",
+            input.to_str().unwrap(),
+            "-o",
+            obj.to_str().unwrap(),
+        ]);
         assert!(out.status.success(), "{out:?}");
-        let stdout = String::from_utf8(out.stdout).unwrap();
+        let text = stdout(&out);
         let mesh = profsubd::io::obj::read_obj_file(&obj).unwrap().mesh;
-        let [gbs, cc] = reported_valences(&stdout);
+        let [gbs, cc] = reported_valences(&text);
         let total: usize = cc.iter().map(|&(_, n)| n).sum();
-        assert_eq!(total, mesh.num_vertices(), "{name}: {stdout}");
+        assert_eq!(total, mesh.num_vertices(), "{name}: {text}");
         for (what, list) in [("GBS", &gbs), ("Catmull-Clark", &cc)] {
             let most = list.iter().map(|&(v, _)| v).max().unwrap();
             // Valences do not grow with N: at most 5 (ring corners), so no vertex of
@@ -161,13 +161,14 @@ fn bad_input_writes_nothing() {
         .chain(more)
         .collect();
     for (i, (json, message)) in cases.iter().enumerate() {
-        let input = dir.path().join(format!("{i}.json"));
-        std::fs::write(&input, json.as_str()).unwrap();
+        let input = write_input(dir.path(), &format!("{i}.json"), json);
         let obj = dir.path().join(format!("{i}.obj"));
-        let out = blend(&[input.to_str().unwrap(), "-o", obj.to_str().unwrap()]);
-        assert!(!out.status.success());
-        let stderr = String::from_utf8(out.stderr).unwrap();
-        assert!(stderr.contains(message), "{i}: {stderr}");
-        assert!(!obj.exists(), "{i}");
+        let out = profsubd(&[
+            "blend",
+            input.to_str().unwrap(),
+            "-o",
+            obj.to_str().unwrap(),
+        ]);
+        assert_refused(&out, message, &[&obj], &i.to_string());
     }
 }

@@ -3,37 +3,17 @@
 #[path = "support/osd_shapes.rs"]
 mod osd_shapes;
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "support/cli.rs"]
+mod cli;
 
+use cli::{example_file, profsubd, stderr, stdout, write_input};
 use profsubd::mesh::HazardKind;
-
-fn profsubd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8(o.stdout.clone()).unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8(o.stderr.clone()).unwrap()
-}
-
-fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("examples/meshes")
-        .join(name)
-}
 
 #[test]
 fn convert_overrides_the_option_tags_and_keeps_the_rest() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("cube.obj");
-    let input = example("cube_creased.obj");
+    let input = example_file("meshes", "cube_creased", "obj");
     let o = profsubd(&[
         "convert",
         input.to_str().unwrap(),
@@ -81,7 +61,7 @@ fn convert_reports_a_missing_input_and_a_bad_flag() {
         stderr(&o),
         "profsubd: error: /nonexistent/in.obj: No such file or directory (os error 2)\n"
     );
-    let input = example("cube_creased.obj");
+    let input = example_file("meshes", "cube_creased", "obj");
     let o = profsubd(&[
         "convert",
         input.to_str().unwrap(),
@@ -106,12 +86,11 @@ fn help_lists_the_subcommands_and_exit_codes() {
 #[test]
 fn convert_reports_ignored_tags_on_stderr() {
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("in.obj");
-    std::fs::write(
-        &input,
+    let input = write_input(
+        dir.path(),
+        "in.obj",
         "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\nt vertexedit 1/0/0 0\n",
-    )
-    .unwrap();
+    );
     let out = dir.path().join("out.obj");
     let o = profsubd(&[
         "convert",
@@ -134,7 +113,7 @@ fn convert_reports_ignored_tags_on_stderr() {
 
 #[test]
 fn check_accepts_the_bundled_example() {
-    let input = example("cube_creased.obj");
+    let input = example_file("meshes", "cube_creased", "obj");
     let o = profsubd(&["check", input.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert_eq!(stderr(&o), "");
@@ -172,16 +151,15 @@ fn check_accepts_the_bundled_example() {
 #[test]
 fn check_exits_2_on_a_mesh_that_loads_but_is_not_a_manifold() {
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("fin.obj");
     // Three triangles on edge 0-1 (a fin), a flipped quad next to the first triangle
     // and a vertex in no face; a hole on the quad.
-    std::fs::write(
-        &input,
+    let input = write_input(
+        dir.path(),
+        "fin.obj",
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 9 9 9\nv -1 1 0\nv -1 0 0\n\
          f 1 2 3\nf 2 1 4\nf 1 2 5\nf 3 1 8 7\n\
          t crease 2/1/0 0 1 1.5\nt crease 2/1/0 0 2 10\nt hole 1/0/0 3\n",
-    )
-    .unwrap();
+    );
     let o = profsubd(&["check", input.to_str().unwrap(), "--crease", "chaikin"]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     let expected = format!(
@@ -245,12 +223,11 @@ fn check_exits_2_on_a_mesh_that_loads_but_is_not_a_manifold() {
 #[test]
 fn check_exits_1_with_the_reason_on_an_invalid_file() {
     let dir = tempfile::tempdir().unwrap();
-    let input = dir.path().join("bad.obj");
-    std::fs::write(
-        &input,
+    let input = write_input(
+        dir.path(),
+        "bad.obj",
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1\n",
-    )
-    .unwrap();
+    );
     let o = profsubd(&["check", input.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));
     assert_eq!(stdout(&o), "");
@@ -261,11 +238,11 @@ fn check_exits_1_with_the_reason_on_an_invalid_file() {
             input.display()
         )
     );
-    std::fs::write(
-        &input,
+    write_input(
+        dir.path(),
+        "bad.obj",
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1 -1\n",
-    )
-    .unwrap();
+    );
     let o = profsubd(&["check", input.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(0));
     assert_eq!(

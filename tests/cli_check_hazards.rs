@@ -6,15 +6,12 @@
 #[allow(dead_code)] // the shapes folder only, not its index
 mod osd_shapes;
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "support/cli.rs"]
+mod cli;
 
-fn profsubd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
-}
+use std::path::{Path, PathBuf};
+
+use cli::{profsubd, stdout, write_input};
 
 /// One entry of `osd_hazards`: kind, vertices, faces.
 type Found = (String, Vec<u32>, Vec<u32>);
@@ -156,7 +153,6 @@ fn a_valence_2_dart_and_its_neighbour() {
     // and 5-16-10-9; edge 5-16 infinitely sharp. 16: interior, two faces, one sharp edge (a
     // valence-2 dart); 5: interior, five edges, one of them sharp (a dart).
     let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("val2_dart.obj");
     let mut text = String::new();
     for j in 0..4 {
         for i in 0..4 {
@@ -175,7 +171,7 @@ fn a_valence_2_dart_and_its_neighbour() {
         }
     }
     text.push_str("t crease 2/1/0 5 16 10\n");
-    std::fs::write(&path, text).unwrap();
+    let path = write_input(dir.path(), "val2_dart.obj", &text);
     let (code, found) = hazards(&path, &[]);
     assert_eq!(code, 0);
     assert_eq!(kinds(&found), ["dart", "valence2_dart", "primvar_limit"]);
@@ -213,13 +209,13 @@ fn no_hazards_on_clean_shapes_and_text_output() {
         let (code, found) = hazards(&shape(&dir, name), &[]);
         assert_eq!((code, found.len()), (0, 0), "{name}");
         let o = profsubd(&["check", shape(&dir, name).to_str().unwrap()]);
-        assert!(String::from_utf8_lossy(&o.stdout).contains("\nopensubdiv 3.5 hazards: 0\n"));
+        assert!(stdout(&o).contains("\nopensubdiv 3.5 hazards: 0\n"));
     }
     let o = profsubd(&[
         "check",
         shape(&dir, "catmark_inf_crease0").to_str().unwrap(),
     ]);
-    let text = String::from_utf8(o.stdout).unwrap();
+    let text = stdout(&o);
     assert!(text.contains("\nopensubdiv 3.5 hazards: 2\nhazard dart: vertices 1 [17], faces 4 [9 10 13 14] (Bfr, Far::PatchTable, Osd): "), "{text}");
     assert!(text.contains("\nhazard primvar_limit: vertices 1 [17] (Far::PrimvarRefiner::Limit): "));
     assert!(text.ends_with("result: manifold mesh\n"));

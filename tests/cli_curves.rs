@@ -2,56 +2,47 @@
 //! status, and neither the OBJ nor the targets file written. (A good run's output, byte for
 //! byte as committed: `tests/example_bytes.rs`.)
 
-use std::process::Command;
+#[path = "support/cli.rs"]
+mod cli;
 
-fn curves(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .arg("curves")
-        .args(args)
-        .output()
-        .unwrap()
-}
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+use cli::{assert_refused, example_file, profsubd, write_input};
 
 /// A unit square's four sides, each bowed up in the middle: a valid boundary.
 const SQUARE: &str = "[[0,0,0],[0.5,0,0.1],[1,0,0]], [[1,0,0],[1,0.5,0.1],[1,1,0]], \
                       [[1,1,0],[0.5,1,0.1],[0,1,0]], [[0,1,0],[0,0.5,0.1],[0,0,0]]";
 
-/// Run `curves` on `json` with `-o` and `--targets`; returns the output and whether each file
-/// exists afterwards.
-fn run(dir: &std::path::Path, name: &str, json: &str) -> (std::process::Output, [bool; 2]) {
-    let input = dir.join(format!("{name}.json"));
-    std::fs::write(&input, json).unwrap();
-    let (obj, targets) = (
-        dir.join(format!("{name}.obj")),
-        dir.join(format!("{name}.txt")),
-    );
-    let out = curves(&[
+/// Run `curves` on `json` with `-o` and `--targets`; returns the output and the OBJ and
+/// targets files it was told to write.
+fn run(dir: &Path, name: &str, json: &str) -> (Output, [PathBuf; 2]) {
+    let input = write_input(dir, &format!("{name}.json"), json);
+    let [obj, targets] = [format!("{name}.obj"), format!("{name}.txt")].map(|f| dir.join(f));
+    let out = profsubd(&[
+        "curves",
         input.to_str().unwrap(),
         "-o",
         obj.to_str().unwrap(),
         "--targets",
         targets.to_str().unwrap(),
     ]);
-    (out, [obj.exists(), targets.exists()])
+    (out, [obj, targets])
 }
 
 #[test]
 fn bad_input_is_refused_with_a_message_and_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
     // The base input works: each case below breaks one thing of it.
-    let (out, written) = run(
+    let (out, files) = run(
         dir.path(),
         "good",
         &format!(r#"{{"boundary": [{SQUARE}]}}"#),
     );
     assert!(out.status.success(), "{out:?}");
-    assert_eq!(written, [true, true]);
+    assert_eq!(files.map(|f| f.exists()), [true, true]);
 
-    let bonnet = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/examples/curves/bonnet.json"
-    ))
-    .unwrap();
+    let bonnet = std::fs::read_to_string(example_file("curves", "bonnet", "json")).unwrap();
     let example_keys = r#""samples": [8, 6], "tau": 1.5"#;
     assert!(bonnet.contains(example_keys));
     let cases: [(&str, String, &str); 11] = [
@@ -121,11 +112,7 @@ fn bad_input_is_refused_with_a_message_and_writes_nothing() {
         ),
     ];
     for (i, (what, json, message)) in cases.iter().enumerate() {
-        let (out, written) = run(dir.path(), &format!("bad{i}"), json);
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(1), "{what}: {out:?}");
-        assert!(stderr.contains(message), "{what}: {stderr}");
-        assert!(out.stdout.is_empty(), "{what}: {out:?}");
-        assert_eq!(written, [false, false], "{what}: a file was written");
+        let (out, [obj, targets]) = run(dir.path(), &format!("bad{i}"), json);
+        assert_refused(&out, message, &[&obj, &targets], what);
     }
 }

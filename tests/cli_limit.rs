@@ -1,9 +1,13 @@
 //! `profsubd limit` prints exactly the numbers of the C API and the Rust API, in both modes,
 //! and rejects bad input with a clear message.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "support/cli.rs"]
+mod cli;
+
+use std::path::PathBuf;
 use std::ptr::null_mut;
+
+use cli::{assert_refused, example_file, numbers, profsubd, stderr, stdout, write_input};
 
 use profsubd::eval::{limit_vertex_samples, Evaluator};
 use profsubd::ffi::evaluator::{
@@ -14,33 +18,18 @@ use profsubd::ffi::mesh_io::profsubd_mesh_read_obj;
 use profsubd::ffi::status::profsubd_status;
 use profsubd::io::obj::read_obj_file;
 
-fn profsubd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
-}
-
 fn example() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/meshes/cube_creased.obj")
-}
-
-fn numbers(stdout: &[u8]) -> Vec<Vec<f64>> {
-    String::from_utf8(stdout.to_vec())
-        .unwrap()
-        .lines()
-        .map(|l| l.split(' ').map(|x| x.parse().unwrap()).collect())
-        .collect()
+    example_file("meshes", "cube_creased", "obj")
 }
 
 #[test]
 fn vertex_mode_prints_the_vertex_limits() {
     let path = example();
     let o = profsubd(&["limit", path.to_str().unwrap(), "--derivs"]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let mesh = read_obj_file(&path).unwrap().mesh;
     let want = limit_vertex_samples(&mesh, &mesh.options().resolve()).unwrap();
-    let got = numbers(&o.stdout);
+    let got = numbers(&o);
     assert_eq!(got.len(), mesh.num_vertices());
     for (g, w) in got.iter().zip(&want) {
         let w: Vec<f64> = [w.position, w.du, w.dv]
@@ -50,13 +39,12 @@ fn vertex_mode_prints_the_vertex_limits() {
         assert_eq!(g, &w);
     }
     let o = profsubd(&["limit", path.to_str().unwrap()]);
-    assert!(numbers(&o.stdout).iter().all(|l| l.len() == 3));
+    assert!(numbers(&o).iter().all(|l| l.len() == 3));
 }
 
 #[test]
 fn point_mode_prints_what_the_c_api_returns() {
     let dir = tempfile::tempdir().unwrap();
-    let pts = dir.path().join("pts.txt");
     let points: Vec<(u32, f64, f64)> = (0..60)
         .map(|i| {
             let t = f64::from(i);
@@ -72,7 +60,7 @@ fn point_mode_prints_what_the_c_api_returns() {
         .iter()
         .map(|(f, u, v)| format!("{f} {u} {v}\n"))
         .collect();
-    std::fs::write(&pts, format!("# face u v\n{text}")).unwrap();
+    let pts = write_input(dir.path(), "pts.txt", &format!("# face u v\n{text}"));
     let path = example();
     let args = [
         "limit",
@@ -84,12 +72,12 @@ fn point_mode_prints_what_the_c_api_returns() {
         "chaikin",
     ];
     let o = profsubd(&args);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let got = numbers(&o.stdout);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let got = numbers(&o);
     // The thread count changes nothing (the default is all cores).
     for threads in ["1", "3"] {
         let t = profsubd(&[&args[..], &["--threads", threads]].concat());
-        assert!(t.status.success(), "{}", String::from_utf8_lossy(&t.stderr));
+        assert!(t.status.success(), "{}", stderr(&t));
         assert_eq!(t.stdout, o.stdout, "--threads {threads}");
     }
 
@@ -178,28 +166,21 @@ fn bad_input_is_reported_with_file_and_line() {
         ("0 NaN 0.5\n", "outside [0, 1]"),
         ("0 0.5\n", "pts.txt:1: expected `face u v`"),
     ] {
-        let pts = dir.path().join("pts.txt");
-        std::fs::write(&pts, text).unwrap();
+        let pts = write_input(dir.path(), "pts.txt", text);
         let o = profsubd(&[
             "limit",
             path.to_str().unwrap(),
             "--at",
             pts.to_str().unwrap(),
         ]);
-        assert_eq!(o.status.code(), Some(1));
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(err.contains(expect), "{err}");
-        assert!(o.stdout.is_empty());
+        assert_refused(&o, expect, &[], text);
     }
     let o = profsubd(&["limit", "/nonexistent/mesh.obj"]);
-    assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("/nonexistent/mesh.obj"));
+    assert_refused(&o, "/nonexistent/mesh.obj", &[], "a missing mesh");
     // A hole face.
-    let holed = dir.path().join("holed.obj");
     let text = std::fs::read_to_string(&path).unwrap() + "t hole 1/0/0 2\n";
-    std::fs::write(&holed, text).unwrap();
-    let pts = dir.path().join("hole.txt");
-    std::fs::write(&pts, "2 0.5 0.5\n").unwrap();
+    let holed = write_input(dir.path(), "holed.obj", &text);
+    let pts = write_input(dir.path(), "hole.txt", "2 0.5 0.5\n");
     let o = profsubd(&[
         "limit",
         holed.to_str().unwrap(),
@@ -207,8 +188,8 @@ fn bad_input_is_reported_with_file_and_line() {
         pts.to_str().unwrap(),
     ]);
     // No surface: `nan` for every number, or with --strict an error naming the line.
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    assert_eq!(String::from_utf8_lossy(&o.stdout), "nan nan nan\n");
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(stdout(&o), "nan nan nan\n");
     let o = profsubd(&[
         "limit",
         holed.to_str().unwrap(),
@@ -216,11 +197,10 @@ fn bad_input_is_reported_with_file_and_line() {
         pts.to_str().unwrap(),
         "--strict",
     ]);
-    assert_eq!(o.status.code(), Some(1));
-    assert!(o.stdout.is_empty());
-    let err = String::from_utf8_lossy(&o.stderr);
-    assert!(
-        err.contains("hole.txt:1: face 2 has no limit surface (--strict)"),
-        "{err}"
+    assert_refused(
+        &o,
+        "hole.txt:1: face 2 has no limit surface (--strict)",
+        &[],
+        "--strict",
     );
 }

@@ -1,19 +1,16 @@
 //! `profsubd refine` on real files: the written mesh equals the library's refinement, tags
 //! carry the decayed sharpness, bad input gives a clear error.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "support/cli.rs"]
+mod cli;
 
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+use cli::{assert_refused, example_file, profsubd, stderr};
 use profsubd::io::obj::read_obj_file;
 use profsubd::refine::{refine_uniform, refine_uniform_ordered, VertexOrder};
 use profsubd::{BoundaryInterpolation, SubdivOptions};
-
-fn profsubd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
-}
 
 fn refine_to(input: &Path, level: &str, out: &Path) -> Output {
     profsubd(&[
@@ -26,19 +23,17 @@ fn refine_to(input: &Path, level: &str, out: &Path) -> Output {
     ])
 }
 
-fn example(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("examples/meshes")
-        .join(name)
+fn cube() -> PathBuf {
+    example_file("meshes", "cube_creased", "obj")
 }
 
 #[test]
 fn refine_writes_far_ordered_mesh_with_decayed_tags() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("r.obj");
-    let input = example("cube_creased.obj");
+    let input = cube();
     let o = refine_to(&input, "2", &out);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let written = read_obj_file(&out).unwrap().mesh;
     assert_eq!(written.num_vertices(), 98);
     assert_eq!(written.num_faces(), 96);
@@ -63,7 +58,7 @@ fn refine_writes_far_ordered_mesh_with_decayed_tags() {
 #[test]
 fn faces_first_order_under_both_spellings() {
     let dir = tempfile::tempdir().unwrap();
-    let input = example("cube_creased.obj");
+    let input = cube();
     let base = read_obj_file(&input).unwrap().mesh;
     let opts = base.options().resolve();
     let lib = refine_uniform_ordered(&base, &opts, 2, VertexOrder::FacesFirst).unwrap();
@@ -73,11 +68,7 @@ fn faces_first_order_under_both_spellings() {
         let out = dir.path().join("r.obj");
         let (i, o) = (input.to_str().unwrap(), out.to_str().unwrap());
         let run = profsubd(&["refine", i, "--level", "2", flag, "-o", o]);
-        assert!(
-            run.status.success(),
-            "{flag}: {}",
-            String::from_utf8_lossy(&run.stderr)
-        );
+        assert!(run.status.success(), "{flag}: {}", stderr(&run));
         let written = read_obj_file(&out).unwrap().mesh;
         assert_eq!(written.positions(), lib.positions(), "{flag}");
         assert_eq!(written.face_indices(), lib.face_indices(), "{flag}");
@@ -88,12 +79,9 @@ fn faces_first_order_under_both_spellings() {
 fn refine_rejects_bad_input() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("r.obj");
-    let input = example("cube_creased.obj");
+    let input = cube();
     let o = refine_to(&input, "9", &out);
-    assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("above the maximum 8"));
+    assert_refused(&o, "above the maximum 8", &[&out], "level 9");
     let o = refine_to(Path::new("/nonexistent/mesh.obj"), "1", &out);
-    assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("/nonexistent/mesh.obj"));
-    assert!(!out.exists());
+    assert_refused(&o, "/nonexistent/mesh.obj", &[&out], "a missing mesh");
 }

@@ -1,22 +1,18 @@
 //! `profsubd offset` prints exactly the Rust API's offset (on all cores), and `profsubd
 //! offset` / `profsubd shell` refuse bad input with a message and write nothing.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+#[path = "support/cli.rs"]
+mod cli;
 
+use std::path::{Path, PathBuf};
+
+use cli::{assert_refused, example_file, numbers, profsubd, stderr, write_input};
 use profsubd::construct::shell::{OffsetSettings, OffsetSurface};
 use profsubd::eval::Domain;
 use profsubd::io::obj::read_obj_file;
 
-fn profsubd(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
-}
-
 fn vase() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/profiles/vase.obj")
+    example_file("profiles", "vase", "obj")
 }
 
 /// Three quads on one edge.
@@ -26,7 +22,6 @@ const NON_MANIFOLD: &str = "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 1
 #[test]
 fn offset_prints_the_rust_offset_to_the_bit() {
     let dir = tempfile::tempdir().unwrap();
-    let pts = dir.path().join("pts.txt");
     let mesh = read_obj_file(&vase()).unwrap().mesh;
     let n = mesh.num_faces() as u32;
     let points: Vec<(u32, f64, f64)> = (0..2000u32)
@@ -43,7 +38,7 @@ fn offset_prints_the_rust_offset_to_the_bit() {
         .iter()
         .map(|(f, u, v)| format!("{f} {u} {v}\n"))
         .collect();
-    std::fs::write(&pts, text).unwrap();
+    let pts = write_input(dir.path(), "pts.txt", &text);
     let c = 0.01 * mesh.bounding_box_diagonal();
     let o = profsubd(&[
         "offset",
@@ -54,7 +49,7 @@ fn offset_prints_the_rust_offset_to_the_bit() {
         pts.to_str().unwrap(),
         "--derivs",
     ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let offset =
         OffsetSurface::new(&mesh, &mesh.options().resolve(), OffsetSettings::new(c)).unwrap();
     let faces: Vec<u32> = points.iter().map(|p| p.0).collect();
@@ -63,11 +58,7 @@ fn offset_prints_the_rust_offset_to_the_bit() {
     let want = offset
         .evaluate_points(Domain::Ptex, &faces, &u, &v)
         .unwrap();
-    let got: Vec<Vec<f64>> = String::from_utf8(o.stdout)
-        .unwrap()
-        .lines()
-        .map(|l| l.split(' ').map(|x| x.parse().unwrap()).collect())
-        .collect();
+    let got = numbers(&o);
     assert_eq!(got.len(), want.len());
     for (g, w) in got.iter().zip(&want) {
         let w = w.unwrap().offset();
@@ -82,10 +73,8 @@ fn offset_prints_the_rust_offset_to_the_bit() {
 #[test]
 fn bad_input_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
-    let bad_mesh = dir.path().join("book.obj");
-    std::fs::write(&bad_mesh, NON_MANIFOLD).unwrap();
-    let pts = dir.path().join("pts.txt");
-    std::fs::write(&pts, "0 0.5 0.5\n").unwrap();
+    let bad_mesh = write_input(dir.path(), "book.obj", NON_MANIFOLD);
+    let pts = write_input(dir.path(), "pts.txt", "0 0.5 0.5\n");
     let (obj, stl) = (dir.path().join("out.obj"), dir.path().join("out.stl"));
     let cases: [(&Path, &str, &str); 3] = [
         (&bad_mesh, "0.1", "manifold"),
@@ -103,15 +92,7 @@ fn bad_input_writes_nothing() {
             "--stl",
             stl.to_str().unwrap(),
         ]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(
-            !o.status.success() && err.contains(says),
-            "shell {c}: {err}"
-        );
-        assert!(
-            !obj.exists() && !stl.exists(),
-            "shell {c}: a file was written"
-        );
+        assert_refused(&o, says, &[&obj, &stl], &format!("shell {c}"));
         let o = profsubd(&[
             "offset",
             mesh.to_str().unwrap(),
@@ -120,11 +101,6 @@ fn bad_input_writes_nothing() {
             "--at",
             pts.to_str().unwrap(),
         ]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(
-            !o.status.success() && err.contains(says),
-            "offset {c}: {err}"
-        );
-        assert!(o.stdout.is_empty(), "offset {c}: printed");
+        assert_refused(&o, says, &[], &format!("offset {c}"));
     }
 }

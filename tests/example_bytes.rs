@@ -6,8 +6,12 @@
 //! builds under emulated CPUs without AVX/FMA). Regenerate with
 //! `scripts/regenerate_examples.sh` after an intended change.
 
+#[path = "support/cli.rs"]
+mod cli;
+
 use std::path::Path;
-use std::process::Command;
+
+use cli::profsubd;
 
 #[test]
 fn examples_are_written_byte_for_byte_as_committed() {
@@ -35,15 +39,14 @@ fn examples_are_written_byte_for_byte_as_committed() {
                 out.path().join(format!("{name}.obj")),
                 out.path().join(format!("{name}.targets.txt")),
             );
-            let status = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-                .arg(command)
-                .arg(&json)
-                .arg("-o")
-                .arg(&obj)
-                .arg("--targets")
-                .arg(&targets)
-                .output()
-                .unwrap();
+            let status = profsubd(&[
+                command,
+                json.to_str().unwrap(),
+                "-o",
+                obj.to_str().unwrap(),
+                "--targets",
+                targets.to_str().unwrap(),
+            ]);
             assert!(status.status.success(), "{name}: {status:?}");
             for (written, committed) in [
                 (obj, json.with_extension("obj")),

@@ -12,13 +12,16 @@
 //!   closed ones watertight with the control mesh's Euler number; OpenSCAD imports the OFF
 //!   and the STL and exports a solid of the same volume.
 
+#[path = "support/cli.rs"]
+mod cli;
 #[path = "support/osd_shapes.rs"]
 #[allow(dead_code)] // the shapes index is not needed here
 mod osd_shapes;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
+use cli::example_file;
 use glam::DVec3;
 use profsubd::eval::Evaluator;
 use profsubd::io::obj::read_obj_file;
@@ -28,22 +31,14 @@ use profsubd::options::{BoundaryInterpolation, CreaseMethod, TriangleSubdivision
 use profsubd::tessellate::{tessellate, Rate, TessellateOptions};
 use serde_json::{json, Value};
 
+/// Run `profsubd` with `args`, which must succeed.
 fn profsubd(args: &[&str]) {
-    let out = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .unwrap();
+    let out = cli::profsubd(args);
     assert!(
         out.status.success(),
         "profsubd {args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
+        cli::stderr(&out)
     );
-}
-
-fn example(p: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("examples")
-        .join(p)
 }
 
 fn s(p: &Path) -> &str {
@@ -144,13 +139,23 @@ fn usd_trimesh_and_openscad_read_what_profsubd_writes() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     let mut usd = vec![
-        usd_case(d, &example("meshes/cube_creased.obj"), &[], UpAxis::Z),
-        usd_case(d, &example("profiles/bottle.obj"), &[], UpAxis::Y),
+        usd_case(
+            d,
+            &example_file("meshes", "cube_creased", "obj"),
+            &[],
+            UpAxis::Z,
+        ),
+        usd_case(
+            d,
+            &example_file("profiles", "bottle", "obj"),
+            &[],
+            UpAxis::Y,
+        ),
     ];
     let mut surface = vec![
-        surface_case(d, &example("meshes/cube_creased.obj")),
-        surface_case(d, &example("profiles/bottle.obj")),
-        surface_case(d, &example("profiles/vase.obj")),
+        surface_case(d, &example_file("meshes", "cube_creased", "obj")),
+        surface_case(d, &example_file("profiles", "bottle", "obj")),
+        surface_case(d, &example_file("profiles", "vase", "obj")),
     ];
     if let Some(shapes) = osd_shapes::shapes_dir() {
         for (name, extra) in [

@@ -6,16 +6,14 @@
 // Reference geometry for tolerance checks: the platform's libm is fine here.
 #![allow(clippy::disallowed_methods)]
 
-// Only the CLI runner and the example paths are used here.
-#[allow(dead_code)]
-#[path = "support/mesh_compare.rs"]
-mod mesh_compare;
+#[path = "support/cli.rs"]
+mod cli;
 
 use std::path::Path;
 use std::ptr::null_mut;
 
+use cli::{assert_refused, example_file, profsubd, stderr, write_input};
 use glam::DVec3;
-use mesh_compare::run_cli;
 
 use profsubd::construct::profile::shapes::double_cone;
 use profsubd::eval::Evaluator;
@@ -110,7 +108,7 @@ fn options(boundary: BoundaryInterpolation, crease_method: CreaseMethod) -> Subd
 
 fn vase() -> (ProfileInput, Settings) {
     ProfileInput::from_json(
-        &std::fs::read_to_string(mesh_compare::example_file("profiles", "vase", "json")).unwrap(),
+        &std::fs::read_to_string(example_file("profiles", "vase", "json")).unwrap(),
         Path::new("vase.json"),
     )
     .unwrap()
@@ -415,28 +413,23 @@ fn json_keys_parse_and_bad_values_are_specific_errors() {
 fn cli_flags_override_the_json_and_errors_write_nothing() {
     let dir = std::env::temp_dir().join(format!("profsubd_fit_options_{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let json = dir.join("rail.json");
-    std::fs::write(
-        &json,
+    let json = write_input(
+        &dir,
+        "rail.json",
         r#"{"profile": [[-0.2,-0.2],[0.2,-0.2],[0.2,0.2],[-0.2,0.2]], "closed_profile": true,
             "trajectory": [[0,0,0],[2,0,0],[2,2,0]], "samples_profile": 8,
             "samples_trajectory": 8, "crease_sharpness": 3, "crease_method": "chaikin",
             "boundary": "edge-only"}"#,
-    )
-    .unwrap();
+    );
     let out = dir.join("rail.obj");
     let (j, o) = (json.to_str().unwrap(), out.to_str().unwrap());
-    let run = run_cli(&["sweep", j, "-o", o]);
-    assert!(
-        run.status.success(),
-        "{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
+    let run = profsubd(&["sweep", j, "-o", o]);
+    assert!(run.status.success(), "{}", stderr(&run));
     let m = read_obj_file(&out).unwrap().mesh;
     assert_eq!(m.options().boundary, Some(BoundaryInterpolation::EdgeOnly));
     assert_eq!(m.options().crease_method, Some(CreaseMethod::Chaikin));
     assert!(m.creases().iter().all(|c| c.sharpness == 3.0));
-    let run = run_cli(&[
+    let run = profsubd(&[
         "sweep",
         j,
         "-o",
@@ -458,8 +451,8 @@ fn cli_flags_override_the_json_and_errors_write_nothing() {
     assert!(m.creases().iter().all(|c| c.sharpness == 1.25));
     std::fs::remove_file(&out).unwrap();
 
-    let vase = mesh_compare::example_file("profiles", "vase", "json");
-    let run = run_cli(&[
+    let vase = example_file("profiles", "vase", "json");
+    let run = profsubd(&[
         "profile",
         vase.to_str().unwrap(),
         "-o",
@@ -467,23 +460,21 @@ fn cli_flags_override_the_json_and_errors_write_nothing() {
         "--boundary",
         "none",
     ]);
-    assert_eq!(run.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&run.stderr).contains("boundary interpolation none"));
-    assert!(!out.exists());
+    assert_refused(
+        &run,
+        "boundary interpolation none",
+        &[&out],
+        "boundary none",
+    );
     for bad in [
         ["--boundary", "edge"],
         ["--crease", "normal"],
         ["--crease-sharpness", "-2"],
     ] {
-        let run = run_cli(&["profile", "-o", o, bad[0], bad[1]]);
-        assert_eq!(run.status.code(), Some(1), "{bad:?}");
-        assert!(
-            String::from_utf8_lossy(&run.stderr).contains(bad[1]),
-            "{bad:?}"
-        );
-        assert!(!out.exists());
+        let run = profsubd(&["profile", "-o", o, bad[0], bad[1]]);
+        assert_refused(&run, bad[1], &[&out], &format!("{bad:?}"));
     }
-    let run = run_cli(&[
+    let run = profsubd(&[
         "profile",
         "-o",
         o,

@@ -10,12 +10,15 @@ mod osd_shapes;
 #[allow(dead_code)]
 #[path = "support/arc.rs"]
 mod arc;
+#[path = "support/cli.rs"]
+mod cli;
 
 use std::f64::consts::{PI, TAU};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::Output;
 
 use arc::arc;
+use cli::{assert_refused, example_file, profsubd, stdout};
 use profsubd::eval::folds::{find_folds, FoldReport, FoldSettings};
 use profsubd::eval::Evaluator;
 use profsubd::io::obj::read_obj_file;
@@ -31,12 +34,7 @@ fn fixture(name: &str) -> PathBuf {
 }
 
 fn check_surface(path: &Path) -> (Output, serde_json::Value) {
-    let o = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(["check", "--surface"])
-        .arg(path)
-        .arg("--json")
-        .output()
-        .expect("run profsubd");
+    let o = profsubd(&["check", "--surface", path.to_str().unwrap(), "--json"]);
     let json = serde_json::from_slice(&o.stdout).expect("JSON report");
     (o, json)
 }
@@ -75,12 +73,7 @@ fn the_bottle_fixture_folds_in_four_faces_of_its_flat_base() {
         }
     }
     // The human report says the same.
-    let text = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(["check", "--surface"])
-        .arg(&path)
-        .output()
-        .unwrap();
-    let text = String::from_utf8(text.stdout).unwrap();
+    let text = stdout(&profsubd(&["check", "--surface", path.to_str().unwrap()]));
     assert!(
         text.contains("folded faces: 4 [288 291 300 303]\n"),
         "{text}"
@@ -123,24 +116,21 @@ fn the_wine_glass_fixture_folds_in_its_foot_and_at_the_bottom_of_its_bowl() {
 
 #[test]
 fn check_without_surface_or_on_a_fold_free_mesh_keeps_exit_code_0() {
-    let cube = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/meshes/cube_creased.obj");
+    let cube = example_file("meshes", "cube_creased", "obj");
     let (o, json) = check_surface(&cube);
     assert_eq!(o.status.code(), Some(0));
     assert_eq!(json["surface"]["fold_free"], true);
-    let plain = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(["check"])
-        .arg(fixture("bottle.obj"))
-        .output()
-        .unwrap();
+    let plain = profsubd(&["check", fixture("bottle.obj").to_str().unwrap()]);
     assert_eq!(plain.status.code(), Some(0));
     // --samples needs --surface; a bad count is an error (exit 1).
-    let bad = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(["check", "--surface", "--samples", "1"])
-        .arg(&cube)
-        .output()
-        .unwrap();
-    assert_eq!(bad.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&bad.stderr).contains("samples per edge 1"));
+    let bad = profsubd(&[
+        "check",
+        "--surface",
+        "--samples",
+        "1",
+        cube.to_str().unwrap(),
+    ]);
+    assert_refused(&bad, "samples per edge 1", &[], "--samples 1");
 }
 
 #[test]

@@ -9,11 +9,12 @@
 //!
 //! OpenSubdiv's side of the same rules is checked in `cpp_tests/conformance_no_surface.cpp`.
 
+#[path = "support/cli.rs"]
+mod cli;
 #[path = "support/osd_shapes.rs"]
 mod osd_shapes;
 
-use std::process::Command;
-
+use cli::{assert_refused, profsubd, stdout};
 use profsubd::eval::{
     limit_stencils, limit_vertex_samples, vertices_with_surface, Domain, Evaluator,
 };
@@ -72,12 +73,9 @@ fn the_named_shapes_mark_exactly_their_vertices_without_surface() {
             }
         }
         // The CLI prints `nan nan nan` there and the same numbers elsewhere; --strict fails.
-        let o = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-            .args(["limit", path.to_str().unwrap()])
-            .output()
-            .unwrap();
+        let o = profsubd(&["limit", path.to_str().unwrap()]);
         assert!(o.status.success());
-        let text = String::from_utf8(o.stdout).unwrap();
+        let text = stdout(&o);
         let lines: Vec<&str> = text.lines().collect();
         assert_eq!(lines.len(), mesh.num_vertices());
         for (v, line) in lines.iter().enumerate() {
@@ -87,16 +85,9 @@ fn the_named_shapes_mark_exactly_their_vertices_without_surface() {
                 "{name} vertex {v}: {line}"
             );
         }
-        let o = Command::new(env!("CARGO_BIN_EXE_profsubd"))
-            .args(["limit", path.to_str().unwrap(), "--strict"])
-            .output()
-            .unwrap();
-        assert_eq!(o.status.code(), Some(1), "{name}");
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert!(
-            err.contains(&format!("vertex {} has no limit surface", want[0])),
-            "{err}"
-        );
+        let o = profsubd(&["limit", path.to_str().unwrap(), "--strict"]);
+        let says = format!("vertex {} has no limit surface", want[0]);
+        assert_refused(&o, &says, &[], name);
     }
 }
 

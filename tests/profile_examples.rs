@@ -2,13 +2,16 @@
 //! tags, positions within 1e-9 × diagonal) and targets file (the C++ harness reads both), has the promised topology, and the CLI writes
 //! the same mesh plus one target line per vertex; bad input writes nothing.
 
+#[path = "support/cli.rs"]
+mod cli;
 #[path = "support/mesh_compare.rs"]
 mod mesh_compare;
 
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use mesh_compare::{assert_same, assert_targets, example_file, run_cli as profsubd};
+use cli::{assert_refused, example_file, profsubd, stderr, write_input};
+use mesh_compare::{assert_same, assert_targets};
 
 use profsubd::construct::settings::read_json;
 use profsubd::io::obj::read_obj_file;
@@ -86,7 +89,7 @@ fn cli_builds_the_default_bottle_with_targets() {
         "--targets",
         targets.to_str().unwrap(),
     ]);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(o.status.success(), "{}", stderr(&o));
     let written = read_obj_file(&out).unwrap().mesh;
     let stored = read_obj_file(&example("bottle", "obj")).unwrap().mesh;
     assert_same(&written, &stored, "default model");
@@ -134,18 +137,14 @@ fn cli_rejects_bad_input_and_writes_nothing() {
             "along",
         ),
     ] {
-        let input = dir.path().join("in.json");
-        std::fs::write(&input, json).unwrap();
+        let input = write_input(dir.path(), "in.json", json);
         let o = profsubd(&[
             "profile",
             input.to_str().unwrap(),
             "-o",
             out.to_str().unwrap(),
         ]);
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(o.status.code(), Some(1), "{json}");
-        assert!(err.contains(expect), "{json}: {err}");
-        assert!(!out.exists(), "{json}: output written");
+        assert_refused(&o, expect, &[&out], json);
     }
     let o = profsubd(&[
         "profile",
@@ -153,6 +152,5 @@ fn cli_rejects_bad_input_and_writes_nothing() {
         "-o",
         out.to_str().unwrap(),
     ]);
-    assert_eq!(o.status.code(), Some(1));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("/nonexistent/in.json"));
+    assert_refused(&o, "/nonexistent/in.json", &[&out], "a missing input");
 }

@@ -3,6 +3,8 @@
 //! structure, and the CLI writes the same mesh plus one
 //! target line per vertex; bad input writes nothing.
 
+#[path = "support/cli.rs"]
+mod cli;
 #[path = "support/mesh_compare.rs"]
 mod mesh_compare;
 #[allow(dead_code)]
@@ -11,7 +13,8 @@ mod swept;
 
 use std::path::PathBuf;
 
-use mesh_compare::{assert_same, assert_targets, example_file, run_cli as profsubd};
+use cli::{assert_refused, example_file, profsubd, stderr, write_input};
+use mesh_compare::{assert_same, assert_targets};
 use profsubd::construct::settings::read_json;
 use profsubd::io::obj::read_obj_file;
 use profsubd::mesh::validate::check;
@@ -124,11 +127,7 @@ fn cli_writes_the_mesh_and_targets_and_nothing_on_error() {
             "--targets",
             targets.to_str().unwrap(),
         ]);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        assert!(out.status.success(), "{}", stderr(&out));
         let s = build(name);
         assert_same(&read_obj_file(&obj).unwrap().mesh, &s.mesh, name);
         let lines: Vec<String> = std::fs::read_to_string(&targets)
@@ -141,7 +140,6 @@ fn cli_writes_the_mesh_and_targets_and_nothing_on_error() {
         assert_eq!(first, vec![s.targets[0].x, s.targets[0].y, s.targets[0].z]);
     }
     // Bad input: the message names the culprit, exit code 1, no file written.
-    let bad = dir.path().join("bad.json");
     let obj = dir.path().join("bad.obj");
     for (cmd, json, expect) in [
         (
@@ -185,11 +183,8 @@ fn cli_writes_the_mesh_and_targets_and_nothing_on_error() {
             "unknown field `twist`",
         ),
     ] {
-        std::fs::write(&bad, json).unwrap();
+        let bad = write_input(dir.path(), "bad.json", json);
         let out = profsubd(&[cmd, bad.to_str().unwrap(), "-o", obj.to_str().unwrap()]);
-        assert_eq!(out.status.code(), Some(1));
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert!(err.contains(expect), "{cmd} {json}: {err}");
-        assert!(!obj.exists());
+        assert_refused(&out, expect, &[&obj], &format!("{cmd} {json}"));
     }
 }

@@ -716,9 +716,7 @@ pub fn fit_limit(
         )));
     }
     // Only the positions change: the topology and tags were validated with `mesh`.
-    let mut fitted = mesh.clone();
-    fitted.set_positions(&x);
-    Ok((fitted, reached, report))
+    Ok((mesh.with_positions(x), reached, report))
 }
 
 /// Estimated bytes a fit of `vertices` vertices and `face_indices` face-vertex indices

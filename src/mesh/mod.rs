@@ -221,6 +221,25 @@ impl Mesh {
     pub fn parts(&self) -> &MeshParts {
         &self.parts
     }
+    /// This mesh's faces, tags and options with `positions` as its vertices (as many, all
+    /// finite: the caller checks). The topology was validated with this mesh; the positions
+    /// are moved in, not copied.
+    pub(crate) fn with_positions(&self, positions: Vec<DVec3>) -> Mesh {
+        debug_assert!(positions.len() == self.num_vertices());
+        let p = &self.parts;
+        Mesh {
+            parts: MeshParts {
+                positions,
+                face_sizes: p.face_sizes.clone(),
+                face_indices: p.face_indices.clone(),
+                creases: p.creases.clone(),
+                corners: p.corners.clone(),
+                holes: p.holes.clone(),
+                options: p.options,
+            },
+            face_offsets: self.face_offsets.clone(),
+        }
+    }
     /// Replace the vertex positions by `positions` (as many, all finite: the caller checks).
     pub(crate) fn set_positions(&mut self, positions: &[DVec3]) {
         debug_assert!(positions.len() == self.num_vertices());
@@ -350,6 +369,28 @@ mod tests {
         let mut p = quad();
         p.holes.push(1);
         assert!(Mesh::from_parts(p).is_err());
+    }
+
+    /// New positions on a mesh give the mesh `from_parts` builds from them and the old
+    /// faces, tags and options (face offsets included).
+    #[test]
+    fn with_positions_is_from_parts_with_the_new_positions() {
+        let mut p = quad();
+        p.creases.push(Crease {
+            vertices: [1, 0],
+            sharpness: 2.5,
+        });
+        p.corners.push(Corner {
+            vertex: 2,
+            sharpness: 10.0,
+        });
+        p.holes.push(0);
+        p.options.crease_method = Some(crate::options::CreaseMethod::Chaikin);
+        let m = Mesh::from_parts(p.clone()).unwrap();
+        p.positions = m.positions().iter().map(|q| *q * 2.0 + DVec3::Z).collect();
+        let moved = m.with_positions(p.positions.clone());
+        assert_eq!(moved, Mesh::from_parts(p).unwrap());
+        assert_ne!(moved.positions(), m.positions());
     }
 
     /// Creases on edges in either direction (repeated too) pass; the first crease that is

@@ -1,27 +1,11 @@
-//! Comparing regenerated example output with the checked-in files, and running the CLI:
-//! `mod mesh_compare;` via `#[path = "support/mesh_compare.rs"]` in a test crate.
+//! Comparing regenerated example output with the checked-in files: `mod mesh_compare;` via
+//! `#[path = "support/mesh_compare.rs"]` in a test crate (running the CLI and the examples'
+//! paths: `support/cli.rs`).
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::path::Path;
 
 use glam::DVec3;
 use profsubd::Mesh;
-
-/// `examples/<dir>/<name>.<ext>` in the repository.
-pub fn example_file(dir: &str, name: &str, ext: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("examples")
-        .join(dir)
-        .join(format!("{name}.{ext}"))
-}
-
-/// Run the `profsubd` binary with `args`.
-pub fn run_cli(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_profsubd"))
-        .args(args)
-        .output()
-        .expect("run profsubd")
-}
 
 /// Same faces, tags and options; positions equal within `1e-9 ×` the diagonal.
 pub fn assert_same(a: &Mesh, b: &Mesh, what: &str) {

@@ -355,8 +355,9 @@ fn design_normals(normals: &[DVec3], limit: &[DVec3]) -> Vec<DVec3> {
 }
 
 /// Replace each zero normal of a face's lattice by the mean direction of its nonzero
-/// neighbours on the lattice (the face's, if none is): exact on a plane, and a point of no
-/// normal is isolated (a zero Jacobian at a corner).
+/// neighbours on the lattice (the face's, if none is). Exact on a plane, where design charts
+/// degenerate (a flat meridian cap's sliver quads, most of whose lattice points have no
+/// difference normal); on the limit a point of no normal is isolated (a zero Jacobian).
 fn fill_normals(normals: &mut [DVec3]) {
     let n = LATTICE + 1;
     let known: Vec<DVec3> = normals.to_vec();

@@ -18,11 +18,7 @@
 //                                          energy is within the relative tolerance of it.
 // No profsubd code computes anything here: the OBJ is read by the harness's own parser and
 // evaluated by Bfr.
-#include "osd_shape.h"
-
-#include <opensubdiv/bfr/refinerSurfaceFactory.h>
-#include <opensubdiv/bfr/surface.h>
-#include <opensubdiv/far/topologyLevel.h>
+#include "bfr_faces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -105,34 +101,28 @@ Energy bending_energy(const std::string &path) {
     Energy out;
     OsdShape shape;
     if (!read_osd_shape(path, &shape, &out.error)) return out;
-    std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(shape);
-    if (!refiner) {
+    bool quads = true;
+    const bool built = for_each_bfr_surface(shape, [&](const Far::TopologyLevel &level, int f,
+                                                       const Bfr::Surface<double> &surface,
+                                                       const double *points) {
+        if (level.GetFaceVertices(f).size() != 4) {
+            out.error = "face " + std::to_string(f) + " is not a quad";
+            return quads = false;
+        }
+        const double coarse = face_energy(surface, points, 4);
+        out.coarse += coarse;
+        out.fine += face_energy(surface, points, 8);
+        double p[3], du[3], dv[3];
+        const double mid[2] = {0.5, 0.5};
+        surface.Evaluate(mid, points, 3, p, du, dv);
+        out.faces.push_back({f, coarse, v3(p)});
+        return true;
+    });
+    if (!built) {
         out.error = "Far rejects the mesh";
         return out;
     }
-    const Far::TopologyLevel &level = refiner->GetLevel(0);
-    using Factory = Bfr::RefinerSurfaceFactory<>;
-    Factory::Options options;
-    options.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
-    Factory factory(*refiner, options);
-    Bfr::Surface<double> surface;
-    std::vector<double> points;
-    for (int f = 0; f < level.GetNumFaces(); ++f) {
-        if (level.GetFaceVertices(f).size() != 4) {
-            out.error = "face " + std::to_string(f) + " is not a quad";
-            return out;
-        }
-        if (!factory.InitVertexSurface(f, &surface)) continue;  // holes, no limit surface
-        points.resize(3 * surface.GetNumPatchPoints());
-        surface.PreparePatchPoints(shape.positions.data(), 3, points.data(), 3);
-        const double coarse = face_energy(surface, points.data(), 4);
-        out.coarse += coarse;
-        out.fine += face_energy(surface, points.data(), 8);
-        double p[3], du[3], dv[3];
-        const double mid[2] = {0.5, 0.5};
-        surface.Evaluate(mid, points.data(), 3, p, du, dv);
-        out.faces.push_back({f, coarse, v3(p)});
-    }
+    if (!quads) return out;
     out.ok = true;
     return out;
 }

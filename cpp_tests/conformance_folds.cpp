@@ -27,12 +27,8 @@
 //   conformance_folds --fold-free FILE.obj...  every file given has no folded face, by Bfr
 //                                 and by profsubd, at both samplings (scripts/fold_matrix.sh).
 #include "capi_mesh.h"
-#include "osd_shape.h"
+#include "bfr_faces.h"
 #include "test_support.h"
-
-#include <opensubdiv/bfr/refinerSurfaceFactory.h>
-#include <opensubdiv/bfr/surface.h>
-#include <opensubdiv/far/topologyLevel.h>
 
 #include <algorithm>
 #include <cmath>
@@ -257,32 +253,20 @@ struct BfrFolds {
 
 BfrFolds bfr_folds(const OsdShape &shape, int n, int depth) {
     BfrFolds out;
-    std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(shape);
-    if (!refiner) {
-        out.ok = false;
-        return out;
-    }
-    const Far::TopologyLevel &l = refiner->GetLevel(0);
-    using Factory = Bfr::RefinerSurfaceFactory<>;
-    Factory::Options fo;
-    fo.SetApproxLevelSmooth(10).SetApproxLevelSharp(10);
-    Factory factory(*refiner, fo);
-    Bfr::Surface<double> surface;
-    std::vector<double> points;
-    for (int f = 0; f < l.GetNumFaces(); ++f) {
-        if (!factory.InitVertexSurface(f, &surface)) continue;  // holes, no limit surface
-        points.resize(3 * surface.GetNumPatchPoints());
-        surface.PreparePatchPoints(shape.positions.data(), 3, points.data(), 3);
+    out.ok = for_each_bfr_surface(shape, [&](const Far::TopologyLevel &l, int f,
+                                             const Bfr::Surface<double> &surface,
+                                             const double *points) {
         Far::ConstIndexArray fv = l.GetFaceVertices(f);
         const int nsub = fv.size() == 4 ? 1 : fv.size();
         for (int k = 0; k < nsub; ++k) {
             int sub = fv.size() == 4 ? -1 : k;
             FaceShape fs = face_shape(l, f, sub);
-            FaceCheck check(surface, points.data(), sub, fs, n, depth);
+            FaceCheck check(surface, points, sub, fs, n, depth);
             out.samples += check.samples();
             if (check.folded()) out.faces.insert(static_cast<uint32_t>(f));
         }
-    }
+        return true;
+    });
     return out;
 }
 

@@ -4,8 +4,11 @@
 //! points (its limit stencil row, which depends only on topology and sharpness), so asking
 //! each vertex's limit to equal its data point is the square sparse system `A X = D`, with
 //! `A` the limit stencil matrix (non-symmetric, well conditioned on meshes of mostly regular
-//! vertices). It is solved first by BiCGSTAB with a Jacobi preconditioner (a few dozen sparse
-//! products), and if that does not reach the tolerance, by dense LU with partial pivoting
+//! vertices). [`fit_limit`] solves it for the control points' offsets from the data points,
+//! first by BiCGSTAB preconditioned by incomplete LU factors on the matrix's own pattern
+//! (`ilu`: two or three iterations on a profile cage; the inverse diagonal, which needed a few
+//! dozen, where they cannot be formed or do not converge), and if that does not reach the
+//! tolerance, by dense LU with partial pivoting
 //! followed by iterative refinement (small systems only). The achieved residual is measured
 //! on the stencil rows themselves and reported. Both solvers are plain scalar loops in a
 //! fixed order, so a fit gives the same bits on every CPU: a library with runtime-dispatched
@@ -115,7 +118,8 @@ const KRYLOV_MARGIN: f64 = 1e-3;
 /// Stopping at the margin left the solution's error (up to κ × the margin) to depend on the
 /// data's position and orientation, since a zero start is not translation-invariant:
 /// translated or rotated inputs differed by up to 8.5e-13 of the model's size, 1e-13 after
-/// polishing (#17 item 7).
+/// polishing (#17 item 7), measured when [`fit_limit`] still started from zero rather than
+/// from the data points.
 const POLISH: f64 = 1e-2;
 
 /// Most iterations spent polishing past convergence.

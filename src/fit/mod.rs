@@ -692,35 +692,45 @@ pub fn fit_limit(
     let mut system = StencilTable::new();
     let mut rhs = targets.to_vec();
     let assembly = control.stage(0.29, 0.3);
-    for (i, rhs) in rhs.iter_mut().enumerate() {
-        assembly.step(i, targets.len())?;
-        let (a, b) = (limit.offsets[i] as usize, limit.offsets[i + 1] as usize);
-        match (role(i), &umbrella) {
-            // A kept vertex's row is the identity: it keeps its position as control point.
-            (Role::Keep, _) => {
-                system.indices.push(i as u32);
-                system.weights.push(1.0);
-            }
-            (Role::Fair, Some(u)) => {
-                // The bending energy of the net's offset from the data points (the design
-                // surface's samples): tangentially the control points stay where the
-                // layout put them, and the offset the interpolation needs spreads smoothly.
-                *rhs = DVec3::ZERO;
-                for (j, w) in u.energy_row(i) {
-                    system.indices.push(j);
-                    system.weights.push(w);
-                    *rhs += targets[j as usize] * w;
+    // With every vertex interpolated the limit stencils are the system: no copy.
+    let assembled = roles.iter().any(|&r| r != Role::Interpolate);
+    if assembled {
+        for (i, rhs) in rhs.iter_mut().enumerate() {
+            assembly.step(i, targets.len())?;
+            let (a, b) = (limit.offsets[i] as usize, limit.offsets[i + 1] as usize);
+            match (role(i), &umbrella) {
+                // A kept vertex's row is the identity: it keeps its position as control
+                // point.
+                (Role::Keep, _) => {
+                    system.indices.push(i as u32);
+                    system.weights.push(1.0);
+                }
+                (Role::Fair, Some(u)) => {
+                    // The bending energy of the net's offset from the data points (the
+                    // design surface's samples): tangentially the control points stay where
+                    // the layout put them, and the offset the interpolation needs spreads
+                    // smoothly.
+                    *rhs = DVec3::ZERO;
+                    for (j, w) in u.energy_row(i) {
+                        system.indices.push(j);
+                        system.weights.push(w);
+                        *rhs += targets[j as usize] * w;
+                    }
+                }
+                _ => {
+                    system.indices.extend_from_slice(&limit.indices[a..b]);
+                    system.weights.extend_from_slice(&limit.weights[a..b]);
                 }
             }
-            _ => {
-                system.indices.extend_from_slice(&limit.indices[a..b]);
-                system.weights.extend_from_slice(&limit.weights[a..b]);
-            }
+            system.offsets.push(system.indices.len() as u32);
         }
-        system.offsets.push(system.indices.len() as u32);
     }
     let tolerance = RELATIVE_TOLERANCE * diagonal;
-    let a: CsrRef<'_> = (&system).into();
+    let a: CsrRef<'_> = if assembled {
+        (&system).into()
+    } else {
+        (&limit).into()
+    };
     // Solved for the offset from the data points: the residual starts at the
     // interpolation's small offsets instead of the model's size (fewer iterations, and a
     // start that moves with the data: the stencil rows sum to 1).

@@ -205,9 +205,12 @@ pub fn solve(
     if n == 0 {
         return Err(Error::invalid_argument("nothing to fit: no data points"));
     }
-    if let Some((x, iterations)) =
-        krylov(a, d, tolerance, control.threads(), &control.stage(0.0, 0.6))?
-    {
+    let krylov_stage = control.stage(0.0, 0.6);
+    let krylov_result = krylov(a, d, tolerance, control.threads(), &krylov_stage)?;
+    // BiCGSTAB's stage ends here whether it converged or not: with ILU(0) it takes two or
+    // three iterations, whose own reports may all fall in its first half.
+    krylov_stage.report(1.0)?;
+    if let Some((x, iterations)) = krylov_result {
         let r = residual(a, &x, d);
         if r <= tolerance {
             let method = SolveMethod::BiCgStab;

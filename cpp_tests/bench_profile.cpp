@@ -7,6 +7,11 @@
 // OpenSubdiv's stencils applied to the fitted control points reproduce the targets.
 //
 //   ctest -R bench_profile -V        (or run the bench_profile executable)
+//
+// `bench_profile --once`: one pipeline on one thread and one table per isolation level, for
+// instruction counts (docs/perf/pipeline.md):
+//   taskset -c 0 valgrind --tool=callgrind --toggle-collect=profsubd_profile_build
+//     --toggle-collect='*osd_limit_table*' build/cpp_tests/bench_profile --once
 #include "capi_mesh.h"
 #include "osd_shape.h"
 #include "test_support.h"
@@ -43,8 +48,11 @@ double thread_cpu() {
 }
 
 // OpenSubdiv's limit stencil table at every control vertex (corner of its first face),
-// including building the refiner and its adaptive refinement.
-std::unique_ptr<const LimitTable> osd_limit_table(const OsdShape &shape, int isolation) {
+// including building the refiner and its adaptive refinement. Not inlined, and one function
+// per isolation level, so that callgrind counts each alone
+// (`--toggle-collect='*osd_limit_table*'`, then callgrind_annotate's inclusive counts).
+template <int isolation>
+__attribute__((noinline)) std::unique_ptr<const LimitTable> osd_limit_table(const OsdShape &shape) {
     static const double corner_s[4] = {0, 1, 1, 0}, corner_t[4] = {0, 0, 1, 1};
     std::unique_ptr<Far::TopologyRefiner> refiner = build_refiner(shape);
     Far::TopologyRefiner::AdaptiveOptions adaptive(isolation);
@@ -68,8 +76,10 @@ std::unique_ptr<const LimitTable> osd_limit_table(const OsdShape &shape, int iso
 
 }  // namespace
 
-int main() {
+int main(int argc, char **argv) {
     Checker ck("bench_profile");
+    const bool once = argc > 1 && std::strcmp(argv[1], "--once") == 0;
+    const int reps = once ? 1 : 3;
     // The bundled bottle's silhouettes (examples/profiles/bottle.json) at 128 x 64.
     static const double c1[] = {0, 0, 1.2, 0, 1.25, 1.5, 1.2, 3.0, 0.45, 3.6, 0.4, 4.4, 0.45, 4.6, 0, 4.6};
     static const double c2[] = {0, 0, 0.8, 0, 0.85, 1.5, 0.8, 3.0, 0.45, 3.6, 0.4, 4.4, 0.45, 4.6, 0, 4.6};
@@ -90,7 +100,7 @@ int main() {
     auto pipeline = [&](size_t threads) {
         profsubd_options_set_threads(raw, threads);
         double t = 1e300;
-        for (int rep = 0; rep < 3; ++rep) {
+        for (int rep = 0; rep < reps; ++rep) {
             profsubd_fitted_free(model);
             model = nullptr;
             Clock::time_point t0 = Clock::now();
@@ -116,7 +126,7 @@ int main() {
         size_t needed = 0;
         profsubd_mesh_get_positions(m1, one_thread.data(), one_thread.size(), &needed);
     }
-    const double t_profsubd = pipeline(0);
+    const double t_profsubd = once ? t_one : pipeline(0);
     if (!model) {
         return ck.finish();
     }
@@ -134,8 +144,10 @@ int main() {
         return ck.finish();
     }
     OsdShape shape = to_osd_shape(capi, profsubd_default_options());
-    ck.check(one_thread.size() == capi.positions.size() &&
-                 std::memcmp(one_thread.data(), capi.positions.data(), one_thread.size() * sizeof(double)) == 0,
+    // (With --once both are the one-thread fit: nothing to compare.)
+    ck.check(once || (one_thread.size() == capi.positions.size() &&
+                      std::memcmp(one_thread.data(), capi.positions.data(),
+                                  one_thread.size() * sizeof(double)) == 0),
              "the fit on all cores is the fit on one thread, bit for bit");
     {
         std::ostringstream s;
@@ -148,10 +160,10 @@ int main() {
     for (int isolation : {4, 10}) {
         double t_osd = 1e300, cpu_osd = 1e300;
         std::unique_ptr<const LimitTable> table;
-        for (int rep = 0; rep < 3; ++rep) {
+        for (int rep = 0; rep < reps; ++rep) {
             Clock::time_point t0 = Clock::now();
             const double c0 = thread_cpu();
-            table = osd_limit_table(shape, isolation);
+            table = isolation == 4 ? osd_limit_table<4>(shape) : osd_limit_table<10>(shape);
             t_osd = std::min(t_osd, seconds_since(t0));
             cpu_osd = std::min(cpu_osd, thread_cpu() - c0);
         }

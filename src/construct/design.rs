@@ -16,7 +16,8 @@
 //! parameter offset.
 //!
 //! [`DesignLattice`] holds the design points of every face on a lattice of
-//! `(LATTICE + 1)²` parameters (computed once, when the construction is built);
+//! `(LATTICE + 1)²` parameters (computed once, when the construction is built, or on first use
+//! for a [`DesignLattice::deferred`] one);
 //! [`surface_report`] evaluates the fitted limit at the same parameters and reports the
 //! largest and mean distance over the bounding-box diagonal, the folds
 //! ([`crate::eval::folds::find_folds`]) and an undulation ratio: the bending energy
@@ -35,7 +36,7 @@
 
 use crate::math;
 use std::f64::consts::TAU;
-use std::sync::OnceLock;
+use std::sync::{Arc, OnceLock};
 
 use glam::{DVec2, DVec3};
 
@@ -86,13 +87,27 @@ pub trait Design {
     fn periods(&self) -> [Option<f64>; 2];
 }
 
+/// Computes a deferred lattice's design points ([`DesignLattice::deferred`]), polling the
+/// control it is given.
+type LatticeSource = dyn Fn(&Control) -> Result<Vec<DVec3>> + Send + Sync;
+
 /// The design surface of every face on its `(LATTICE + 1)²` lattice, face by face, `u`
 /// fastest, and the [`SurfaceReport`] of the fitted mesh once computed.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Clone, Default)]
 pub struct DesignLattice {
-    /// The design points.
-    pub points: Vec<DVec3>,
+    points: OnceLock<Vec<DVec3>>,
+    /// Where the points come from when first asked for (none: given).
+    source: Option<Arc<LatticeSource>>,
     report: OnceLock<SurfaceReport>,
+}
+
+impl std::fmt::Debug for DesignLattice {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("DesignLattice")
+            .field("points", &self.points.get().map(Vec::len))
+            .field("report", &self.report.get())
+            .finish()
+    }
 }
 
 impl DesignLattice {
@@ -100,9 +115,39 @@ impl DesignLattice {
     /// whose design surface is sampled directly (the GBS blend, shells).
     pub fn from_points(points: Vec<DVec3>) -> DesignLattice {
         DesignLattice {
-            points,
-            report: OnceLock::new(),
+            points: OnceLock::from(points),
+            ..DesignLattice::default()
         }
+    }
+
+    /// A lattice whose points `source` computes on first use ([`DesignLattice::points`], the
+    /// surface report): a construction that is never asked for its report does not pay
+    /// for the lattice. `source` gets the control of the call that needs the points.
+    pub fn deferred(
+        source: impl Fn(&Control) -> Result<Vec<DVec3>> + Send + Sync + 'static,
+    ) -> DesignLattice {
+        DesignLattice {
+            source: Some(Arc::new(source)),
+            ..DesignLattice::default()
+        }
+    }
+
+    /// The design points (face by face, `u` fastest), computed on the first call if
+    /// deferred. Errors: those of the deferred computation.
+    pub fn points(&self) -> Result<&[DVec3]> {
+        self.points_with(&Control::NONE)
+    }
+
+    /// [`DesignLattice::points`] polling `control` while computing them.
+    fn points_with(&self, control: &Control) -> Result<&[DVec3]> {
+        if let Some(p) = self.points.get() {
+            return Ok(p);
+        }
+        let p = match &self.source {
+            Some(source) => source(control)?,
+            None => Vec::new(),
+        };
+        Ok(self.points.get_or_init(|| p))
     }
 
     /// The [`surface_report`] of `mesh` (the fitted mesh of these faces), computed on the
@@ -200,6 +245,19 @@ pub fn design_lattice(
     design: &dyn Design,
     control: &Control,
 ) -> Result<DesignLattice> {
+    lattice_points(faces, coords, points, design, control).map(DesignLattice::from_points)
+}
+
+/// The points of [`design_lattice`] (for a [`DesignLattice::deferred`] source).
+///
+/// Errors: [`crate::Error::Cancelled`] from `control`.
+pub fn lattice_points(
+    faces: &[[u32; 4]],
+    coords: &[DesignCoord],
+    points: &[DVec3],
+    design: &dyn Design,
+    control: &Control,
+) -> Result<Vec<DVec3>> {
     let [ps, pt] = design.periods();
     let poll = control.stage(0.0, 0.0);
     let mut out = Vec::with_capacity(faces.len() * (LATTICE + 1) * (LATTICE + 1));
@@ -250,10 +308,7 @@ pub fn design_lattice(
             });
         }
     }
-    Ok(DesignLattice {
-        points: out,
-        report: OnceLock::new(),
-    })
+    Ok(out)
 }
 
 /// Smallest sine between a lattice point's two difference derivatives for which it gets a
@@ -438,8 +493,9 @@ pub fn surface_report_with(
     let (mut max, mut sum, mut count, mut offset) = (0.0f64, 0.0, 0usize, 0.0f64);
     let (mut limit_energy, mut design_energy) = (0.0, 0.0);
     let (mut limit, mut limit_normals) = (Vec::with_capacity(per_face), Vec::new());
-    let faces = design.points.len() / per_face;
-    for (f, want) in design.points.chunks(per_face).enumerate() {
+    let points = design.points_with(&poll)?;
+    let faces = points.len() / per_face;
+    for (f, want) in points.chunks(per_face).enumerate() {
         poll.step(f, faces)?;
         if !ev.has_surface(f as u32) {
             continue;
@@ -481,12 +537,22 @@ pub fn parts_lattice(
     design: &dyn Design,
     control: &Control,
 ) -> Result<DesignLattice> {
-    let faces: Vec<[u32; 4]> = parts
+    design_lattice(
+        &quad_faces(parts),
+        coords,
+        &parts.positions,
+        design,
+        control,
+    )
+}
+
+/// The faces of quad mesh parts, as [`design_lattice`] takes them.
+pub fn quad_faces(parts: &MeshParts) -> Vec<[u32; 4]> {
+    parts
         .face_indices
         .chunks_exact(4)
         .map(|f| [f[0], f[1], f[2], f[3]])
-        .collect();
-    design_lattice(&faces, coords, &parts.positions, design, control)
+        .collect()
 }
 
 #[cfg(test)]
@@ -537,7 +603,7 @@ mod tests {
         ];
         let l = one_face(&coords);
         // The middle of the face straddles θ = 0 (6.0 and 0.1 + 2π average to ≈ 0.05 − π/…).
-        let mid = l.points[(LATTICE + 1) * (LATTICE / 2) + LATTICE / 2];
+        let mid = l.points().unwrap()[(LATTICE + 1) * (LATTICE / 2) + LATTICE / 2];
         let theta = 0.5 * (6.0 + 0.1 + TAU);
         assert!((mid - Sphere.side(0.1, theta)).length() < 1e-14, "{mid}");
         // A cap face with the pole as a corner: the chart is Cartesian, the pole has no angle.
@@ -564,8 +630,8 @@ mod tests {
             },
         ];
         let l = one_face(&coords);
-        assert!((l.points[0] - DVec3::Z).length() < 1e-14);
-        let last = l.points[(LATTICE + 1) * (LATTICE + 1) - 1];
+        assert!((l.points().unwrap()[0] - DVec3::Z).length() < 1e-14);
+        let last = l.points().unwrap()[(LATTICE + 1) * (LATTICE + 1) - 1];
         assert!((last - Sphere.cap(1, 0.5, 1.0)).length() < 1e-14);
     }
 

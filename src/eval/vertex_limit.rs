@@ -47,7 +47,7 @@ use super::sample::LimitSample;
 use super::stencil::StencilTable;
 use super::surface::vertices_with_surface_in;
 use super::vertex_ring::{self, sub, CreaseLine, Point, Ring, MAX_LEVELS};
-use crate::catmark::crease::is_infinite;
+use crate::catmark::crease::{is_infinite, is_semi_sharp, is_sharp};
 use crate::topology::Level;
 
 /// Limit position, `du` and `dv` stencils of every control vertex, rows in vertex order.
@@ -85,6 +85,7 @@ pub(crate) fn limit_stencils_with(
     let cancelled = AtomicBool::new(false);
     let parts = super::parallel::map_ranges(mesh.num_vertices(), control.threads(), |range| {
         let mut table = StencilTable::new();
+        let mut row = Vec::new();
         let (first, len) = (range.start == 0, range.len());
         for v in range {
             if first {
@@ -96,6 +97,10 @@ pub(crate) fn limit_stencils_with(
             }
             if !surface[v] {
                 table.push_row([]);
+                continue;
+            }
+            if closed_form_row(&level, v as u32, &mut row) {
+                table.push_row(row.iter().copied());
                 continue;
             }
             let local = Local::new(&level, v as u32);
@@ -118,6 +123,70 @@ pub(crate) fn limit_stencils_with(
         }
     }
     Ok(table)
+}
+
+/// The limit stencil row of vertex `v` without refining its ring, where its level-0
+/// neighbourhood is already stationary (vertex sharpness 0, every incident edge smooth or
+/// infinitely sharp, every face a quad) and its rule has a closed form: smooth at an interior
+/// vertex or crease. `row` gets the entries in vertex order and the result is `true`; the
+/// weights are computed as [`Ring::limit`] computes them, so the row is the general path's bit
+/// for bit (checked on every vertex of the examples and OpenSubdiv's shapes by the tests).
+/// `false` (row undefined) everywhere else, and where a vertex would appear twice in the
+/// mask (a degenerate neighbourhood, whose weights the general path sums).
+fn closed_form_row(level: &Level, v: u32, row: &mut Vec<(u32, f64)>) -> bool {
+    let vi = v as usize;
+    if is_sharp(level.vertex_sharpness(vi)) || level.is_vertex_non_manifold(vi) {
+        return false;
+    }
+    let (edges, faces) = (level.vertex_edges(vi), level.vertex_faces(vi));
+    let mut sharp = [0usize; 2];
+    let mut count = 0;
+    for (k, &e) in edges.iter().enumerate() {
+        let s = level.edge_sharpness(e as usize);
+        if is_semi_sharp(s) {
+            return false;
+        }
+        if is_sharp(s) {
+            if count == 2 {
+                return false;
+            }
+            sharp[count] = k;
+            count += 1;
+        }
+    }
+    if faces
+        .iter()
+        .any(|&f| level.face_vertices(f as usize).len() != 4)
+    {
+        return false;
+    }
+    row.clear();
+    match count {
+        0 if faces.len() == edges.len() => {
+            let n = edges.len() as f64;
+            let d = n * (n + 5.0);
+            row.push((v, n * n / d));
+            for (&e, (&f, &c)) in edges
+                .iter()
+                .zip(faces.iter().zip(level.vertex_face_local_indices(vi)))
+            {
+                row.push((other_end(level, e, v), 4.0 / d));
+                row.push((
+                    level.face_vertices(f as usize)[(c as usize + 2) % 4],
+                    1.0 / d,
+                ));
+            }
+        }
+        2 => {
+            row.push((v, 4.0 / 6.0));
+            for k in sharp {
+                row.push((other_end(level, edges[k], v), 1.0 / 6.0));
+            }
+        }
+        _ => return false,
+    }
+    row.sort_unstable_by_key(|&(g, _)| g);
+    row.windows(2).all(|w| w[0].0 != w[1].0)
 }
 
 /// Limit position and derivative stencils of every control vertex (see the module doc for
@@ -622,6 +691,75 @@ mod tests {
             assert!(err < 1e-14, "vertex {v}: {w:?} vs {row:?}");
             assert!((w.iter().sum::<f64>() - 1.0).abs() < 1e-14);
         }
+    }
+
+    /// Every `.obj` of the bundled examples and of OpenSubdiv's regression shapes
+    /// (`$PROFSUBD_OSD_SHAPES`, else `../shared/conformance/osd_shapes`, skipped if absent).
+    fn example_and_shape_meshes() -> Vec<(std::path::PathBuf, Mesh)> {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+        let shapes = std::env::var_os("PROFSUBD_OSD_SHAPES")
+            .map(std::path::PathBuf::from)
+            .unwrap_or_else(|| root.join("../shared/conformance/osd_shapes"));
+        let mut dirs: Vec<_> = ["profiles", "sweeps", "curves", "blends"]
+            .iter()
+            .map(|d| root.join("examples").join(d))
+            .collect();
+        dirs.push(shapes);
+        let mut out = Vec::new();
+        for dir in dirs.iter().filter(|d| d.is_dir()) {
+            let mut paths: Vec<_> = std::fs::read_dir(dir)
+                .unwrap()
+                .map(|e| e.unwrap().path())
+                .filter(|p| p.extension().is_some_and(|x| x == "obj"))
+                .collect();
+            paths.sort();
+            for path in paths {
+                // Shapes the reader refuses (OpenSubdiv's deliberately invalid ones) are
+                // not meshes with limit stencils.
+                if let Ok(read) = crate::io::obj::read_obj_file(&path) {
+                    out.push((path, read.mesh));
+                }
+            }
+        }
+        out
+    }
+
+    #[test]
+    fn closed_form_rows_are_the_general_rows_bit_for_bit() {
+        let (mut fast, mut general, mut meshes) = (0usize, 0usize, 0usize);
+        for (path, mesh) in example_and_shape_meshes() {
+            meshes += 1;
+            for options in [
+                mesh.options().resolve(),
+                SubdivOptions {
+                    boundary: BoundaryInterpolation::EdgeOnly,
+                    crease_method: CreaseMethod::Chaikin,
+                    ..SubdivOptions::default()
+                },
+            ] {
+                let level = Level::from_mesh_with_options(&mesh, &options);
+                let surface = vertices_with_surface_in(&level);
+                let mut row = Vec::new();
+                for v in 0..mesh.num_vertices() as u32 {
+                    if !surface[v as usize] || !closed_form_row(&level, v, &mut row) {
+                        general += 1;
+                        continue;
+                    }
+                    fast += 1;
+                    let local = Local::new(&level, v);
+                    let (p, _) = vertex_limit(&options, &level, &local, v, false).unwrap();
+                    let want: Vec<(u32, f64)> = local.sparse(&p).collect();
+                    // `==` on the weights: the same bits (no zero weights, no NaN).
+                    assert_eq!(row, want, "{} vertex {v} {options:?}", path.display());
+                }
+            }
+        }
+        println!("{meshes} meshes: {fast} closed-form rows, {general} general");
+        // The examples alone hold thousands of regular vertices.
+        assert!(
+            meshes >= 20 && fast > 10_000 && general > 100,
+            "{meshes} {fast} {general}"
+        );
     }
 
     #[test]

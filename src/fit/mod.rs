@@ -4,8 +4,11 @@
 //! points (its limit stencil row, which depends only on topology and sharpness), so asking
 //! each vertex's limit to equal its data point is the square sparse system `A X = D`, with
 //! `A` the limit stencil matrix (non-symmetric, well conditioned on meshes of mostly regular
-//! vertices). It is solved first by BiCGSTAB with a Jacobi preconditioner (a few dozen sparse
-//! products), and if that does not reach the tolerance, by dense LU with partial pivoting
+//! vertices). [`fit_limit`] solves it for the control points' offsets from the data points,
+//! first by BiCGSTAB preconditioned by incomplete LU factors on the matrix's own pattern
+//! (`ilu`: two or three iterations on a profile cage; the inverse diagonal, which needed a few
+//! dozen, where they cannot be formed or do not converge), and if that does not reach the
+//! tolerance, by dense LU with partial pivoting
 //! followed by iterative refinement (small systems only). The achieved residual is measured
 //! on the stencil rows themselves and reported. Both solvers are plain scalar loops in a
 //! fixed order, so a fit gives the same bits on every CPU: a library with runtime-dispatched
@@ -23,6 +26,7 @@
 pub mod bending;
 pub mod cage;
 pub mod fair;
+mod ilu;
 
 pub use cage::{fit_cage, FitOptions, FittedCage};
 
@@ -38,6 +42,7 @@ use crate::eval::vertex_limit::limit_stencils_with;
 use crate::eval::StencilTable;
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
+use ilu::Ilu0;
 
 /// Relative tolerance of [`fit_limit`]: residual ≤ this × the data points' bounding-box
 /// diagonal.
@@ -113,7 +118,8 @@ const KRYLOV_MARGIN: f64 = 1e-3;
 /// Stopping at the margin left the solution's error (up to κ × the margin) to depend on the
 /// data's position and orientation, since a zero start is not translation-invariant:
 /// translated or rotated inputs differed by up to 8.5e-13 of the model's size, 1e-13 after
-/// polishing (#17 item 7).
+/// polishing (#17 item 7), measured when [`fit_limit`] still started from zero rather than
+/// from the data points.
 const POLISH: f64 = 1e-2;
 
 /// Most iterations spent polishing past convergence.
@@ -199,9 +205,12 @@ pub fn solve(
     if n == 0 {
         return Err(Error::invalid_argument("nothing to fit: no data points"));
     }
-    if let Some((x, iterations)) =
-        krylov(a, d, tolerance, control.threads(), &control.stage(0.0, 0.6))?
-    {
+    let krylov_stage = control.stage(0.0, 0.6);
+    let krylov_result = krylov(a, d, tolerance, control.threads(), &krylov_stage)?;
+    // BiCGSTAB's stage ends here whether it converged or not: with ILU(0) it takes two or
+    // three iterations, whose own reports may all fall in its first half.
+    krylov_stage.report(1.0)?;
+    if let Some((x, iterations)) = krylov_result {
         let r = residual(a, &x, d);
         if r <= tolerance {
             let method = SolveMethod::BiCgStab;
@@ -290,9 +299,10 @@ fn dot(u: &[f64], v: &[f64]) -> f64 {
     sum
 }
 
-/// BiCGSTAB on each coordinate column, right-preconditioned by the inverse diagonal, from a
-/// zero start; `None` if it does not converge (or a diagonal entry vanishes, or it breaks
-/// down). Each coordinate stops when its residual's Euclidean norm, which bounds its rows'
+/// BiCGSTAB on each coordinate column, right-preconditioned by incomplete LU factors
+/// ([`ilu`]), or by the inverse diagonal where they cannot be formed or do not converge,
+/// from a zero start; `None` if it does not converge (or a diagonal entry vanishes, or it
+/// breaks down). Each coordinate stops when its residual's Euclidean norm, which bounds its rows'
 /// residuals, is below a margin of the tolerance (a few more iterations, so that the fit has
 /// margin for other evaluators). Column `j` runs on thread `j mod threads` (0: all cores, at
 /// most 3); the calling thread's columns fill `control` in equal parts, and a cancel there
@@ -316,8 +326,55 @@ fn krylov(
     if diag.iter().any(|&x| x.abs() < 1e-12) {
         return Ok(None);
     }
-    let inv_diag: Vec<f64> = diag.iter().map(|d| 1.0 / d).collect();
     let stop = KRYLOV_MARGIN * tolerance;
+    // ILU(0) first; the diagonal if it cannot be factored or does not converge (the rest of
+    // the progress range).
+    let jacobi_control = match Ilu0::new(a) {
+        Some(ilu) => {
+            let pre = Preconditioner::Ilu(ilu);
+            if let Some(x) = krylov_with(a, d, stop, &pre, threads, &control.stage(0.0, 0.5))? {
+                return Ok(Some(x));
+            }
+            control.stage(0.5, 1.0)
+        }
+        None => control.stage(0.0, 1.0),
+    };
+    let pre = Preconditioner::Jacobi(diag.iter().map(|d| 1.0 / d).collect());
+    krylov_with(a, d, stop, &pre, threads, &jacobi_control)
+}
+
+/// How BiCGSTAB's search directions are preconditioned (on the right).
+enum Preconditioner<'a> {
+    /// The inverse diagonal.
+    Jacobi(Vec<f64>),
+    /// Incomplete LU factors on the matrix's pattern.
+    Ilu(Ilu0<'a>),
+}
+
+impl Preconditioner<'_> {
+    /// `out = M⁻¹ r`.
+    fn apply(&self, r: &[f64], out: &mut [f64]) {
+        match self {
+            Preconditioner::Jacobi(inv_diag) => {
+                for ((o, r), d) in out.iter_mut().zip(r).zip(inv_diag) {
+                    *o = d * r;
+                }
+            }
+            Preconditioner::Ilu(f) => f.solve(r, out),
+        }
+    }
+}
+
+/// [`krylov`] with preconditioner `pre`: its three columns on `threads` threads.
+fn krylov_with(
+    a: CsrRef<'_>,
+    d: &[DVec3],
+    stop: f64,
+    pre: &Preconditioner<'_>,
+    threads: usize,
+    control: &Control,
+) -> Result<Option<(Vec<DVec3>, usize)>> {
+    let n = d.len();
     let threads = resolve_threads(threads).min(3);
     let cancelled = Arc::new(AtomicBool::new(false));
     let flag = cancelled.clone();
@@ -332,7 +389,7 @@ fn krylov(
             let b: Vec<f64> = d.iter().map(|p| p[j]).collect();
             let result = bicgstab_column(
                 a,
-                &inv_diag,
+                pre,
                 &b,
                 stop,
                 stop * POLISH,
@@ -378,7 +435,7 @@ fn krylov(
 /// going back.
 fn bicgstab_column(
     a: CsrRef<'_>,
-    inv_diag: &[f64],
+    pre: &Preconditioner<'_>,
     b: &[f64],
     stop: f64,
     polish: f64,
@@ -423,8 +480,8 @@ fn bicgstab_column(
         rho = rho_next;
         for i in 0..n {
             p[i] = r[i] + beta * (p[i] - omega * v[i]);
-            y[i] = inv_diag[i] * p[i];
         }
+        pre.apply(&p, &mut y);
         apply_scalar(a, &y, &mut v);
         let rv = dot(&r_hat, &v);
         if rv == 0.0 || !rv.is_finite() {
@@ -442,9 +499,7 @@ fn bicgstab_column(
         if half < stop {
             converged = Some((x.clone(), it));
         }
-        for i in 0..n {
-            z[i] = inv_diag[i] * s[i];
-        }
+        pre.apply(&s, &mut z);
         apply_scalar(a, &z, &mut t);
         let tt = dot(&t, &t);
         if tt == 0.0 || !tt.is_finite() {
@@ -640,54 +695,59 @@ pub fn fit_limit(
     let mut system = StencilTable::new();
     let mut rhs = targets.to_vec();
     let assembly = control.stage(0.29, 0.3);
-    for (i, rhs) in rhs.iter_mut().enumerate() {
-        assembly.step(i, targets.len())?;
-        let (a, b) = (limit.offsets[i] as usize, limit.offsets[i + 1] as usize);
-        match (role(i), &umbrella) {
-            // A kept vertex's row is the identity: it keeps its position as control point.
-            (Role::Keep, _) => {
-                system.indices.push(i as u32);
-                system.weights.push(1.0);
-            }
-            (Role::Fair, Some(u)) => {
-                // The bending energy of the net's offset from the data points (the design
-                // surface's samples): tangentially the control points stay where the
-                // layout put them, and the offset the interpolation needs spreads smoothly.
-                *rhs = DVec3::ZERO;
-                for (j, w) in u.energy_row(i) {
-                    system.indices.push(j);
-                    system.weights.push(w);
-                    *rhs += targets[j as usize] * w;
+    // With every vertex interpolated the limit stencils are the system: no copy.
+    let assembled = roles.iter().any(|&r| r != Role::Interpolate);
+    if assembled {
+        for (i, rhs) in rhs.iter_mut().enumerate() {
+            assembly.step(i, targets.len())?;
+            let (a, b) = (limit.offsets[i] as usize, limit.offsets[i + 1] as usize);
+            match (role(i), &umbrella) {
+                // A kept vertex's row is the identity: it keeps its position as control
+                // point.
+                (Role::Keep, _) => {
+                    system.indices.push(i as u32);
+                    system.weights.push(1.0);
+                }
+                (Role::Fair, Some(u)) => {
+                    // The bending energy of the net's offset from the data points (the
+                    // design surface's samples): tangentially the control points stay where
+                    // the layout put them, and the offset the interpolation needs spreads
+                    // smoothly.
+                    *rhs = DVec3::ZERO;
+                    for (j, w) in u.energy_row(i) {
+                        system.indices.push(j);
+                        system.weights.push(w);
+                        *rhs += targets[j as usize] * w;
+                    }
+                }
+                _ => {
+                    system.indices.extend_from_slice(&limit.indices[a..b]);
+                    system.weights.extend_from_slice(&limit.weights[a..b]);
                 }
             }
-            _ => {
-                system.indices.extend_from_slice(&limit.indices[a..b]);
-                system.weights.extend_from_slice(&limit.weights[a..b]);
-            }
+            system.offsets.push(system.indices.len() as u32);
         }
-        system.offsets.push(system.indices.len() as u32);
     }
     let tolerance = RELATIVE_TOLERANCE * diagonal;
-    let a: CsrRef<'_> = (&system).into();
-    let (x, mut report) = if umbrella.is_some() {
-        // Solved for the offset from the data points: the faired rows make the system
-        // stiffer, and from the data points the residual starts at the interpolation's
-        // small offsets instead of the model's size.
-        let start = a.apply(targets);
-        let offset_rhs: Vec<DVec3> = rhs.iter().zip(&start).map(|(r, s)| *r - *s).collect();
-        let (y, mut report) = solve(a, &offset_rhs, tolerance, &control.stage(0.3, 1.0))?;
-        let x: Vec<DVec3> = targets.iter().zip(&y).map(|(t, y)| *t + *y).collect();
-        report.residual = residual(a, &x, &rhs);
-        if report.residual.is_nan() || report.residual > tolerance {
-            return Err(Error::NumericalFailure(format!(
-                "faired fit reached residual {:e}, above the tolerance {tolerance:e}",
-                report.residual
-            )));
-        }
-        (x, report)
+    let a: CsrRef<'_> = if assembled {
+        (&system).into()
     } else {
-        solve(a, &rhs, tolerance, &control.stage(0.3, 1.0))?
+        (&limit).into()
     };
+    // Solved for the offset from the data points: the residual starts at the
+    // interpolation's small offsets instead of the model's size (fewer iterations, and a
+    // start that moves with the data: the stencil rows sum to 1).
+    let start = a.apply(targets);
+    let offset_rhs: Vec<DVec3> = rhs.iter().zip(&start).map(|(r, s)| *r - *s).collect();
+    let (y, mut report) = solve(a, &offset_rhs, tolerance, &control.stage(0.3, 1.0))?;
+    let x: Vec<DVec3> = targets.iter().zip(&y).map(|(t, y)| *t + *y).collect();
+    report.residual = residual(a, &x, &rhs);
+    if report.residual.is_nan() || report.residual > tolerance {
+        return Err(Error::NumericalFailure(format!(
+            "interpolating fit reached residual {:e}, above the tolerance {tolerance:e}",
+            report.residual
+        )));
+    }
     let centre = (lo + hi) * 0.5;
     let spread = |p: &[DVec3]| p.iter().map(|p| (*p - centre).length()).fold(0.0, f64::max);
     let norm = (0..a.rows())

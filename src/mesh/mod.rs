@@ -293,10 +293,23 @@ fn check_creases(parts: &MeshParts, face_offsets: &[u32]) -> Result<()> {
     creased.sort_unstable();
     creased.dedup();
     let mut joined = vec![false; creased.len()];
+    // Only edges between two creased vertices are looked up.
+    let mut on_crease = vec![false; nv];
+    for &(a, b) in &creased {
+        for v in [a, b] {
+            if let Some(c) = on_crease.get_mut(v as usize) {
+                *c = true;
+            }
+        }
+    }
     for w in face_offsets.windows(2) {
         let face = &parts.face_indices[w[0] as usize..w[1] as usize];
         for (i, &a) in face.iter().enumerate() {
-            if let Ok(k) = creased.binary_search(&key([a, face[(i + 1) % face.len()]])) {
+            let b = face[(i + 1) % face.len()];
+            if !(on_crease[a as usize] && on_crease[b as usize]) {
+                continue;
+            }
+            if let Ok(k) = creased.binary_search(&key([a, b])) {
                 joined[k] = true;
             }
         }

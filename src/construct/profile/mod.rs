@@ -33,7 +33,7 @@ use glam::{DVec2, DVec3};
 pub use input::{ForcedCorners, ProfileInput};
 pub use silhouettes::EndKind;
 
-use crate::construct::design::{parts_lattice, Design, DesignCoord, DesignLattice};
+use crate::construct::design::{lattice_points, quad_faces, Design, DesignCoord, DesignLattice};
 use crate::construct::fitted::Fitted;
 use crate::construct::grid::QuadMeshBuilder;
 use crate::construct::pole_cap::{grid_cap_depth, CapVertex};
@@ -151,12 +151,26 @@ pub fn build_cage(input: &ProfileInput, settings: &Settings) -> Result<ProfileCa
         crease_rings.push(r);
     }
     let parts = b.finish(settings.fit_options().tags());
-    let design = parts_lattice(&parts, &coords, &design, &settings.control)?;
+    let (ends, size, depth) = (sil.ends, sil.size, design.depth);
+    // The lattice is only needed for the surface report: computed on its first call, from
+    // the curves, parameter and rings moved here.
+    let faces = quad_faces(&parts);
+    let points = parts.positions.clone();
+    let design = DesignLattice::deferred(move |control| {
+        let design = ProfileDesign {
+            sil: &sil,
+            param: &param,
+            rings: &rings,
+            depth,
+            sections: RefCell::default(),
+        };
+        lattice_points(&faces, &coords, &points, &design, control)
+    });
     Ok(ProfileCage {
         parts,
-        ends: sil.ends,
+        ends,
         crease_rings,
-        size: sil.size,
+        size,
         design,
     })
 }

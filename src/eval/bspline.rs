@@ -101,9 +101,15 @@ fn tensor(point: impl Fn(usize) -> DVec3, s: f64, t: f64) -> (DVec3, DVec3, DVec
     let mut ds = DVec3::ZERO;
     let mut dt = DVec3::ZERO;
     for j in 0..4 {
-        let row = [0, 1, 2, 3].map(|i| point(4 * j + i));
-        let r = row[0] * bu[0] + row[1] * bu[1] + row[2] * bu[2] + row[3] * bu[3];
-        let d = row[0] * du[0] + row[1] * du[1] + row[2] * du[2] + row[3] * du[3];
+        // Four locals, not an array: `array::map` kept the row in memory.
+        let (p0, p1, p2, p3) = (
+            point(4 * j),
+            point(4 * j + 1),
+            point(4 * j + 2),
+            point(4 * j + 3),
+        );
+        let r = p0 * bu[0] + p1 * bu[1] + p2 * bu[2] + p3 * bu[3];
+        let d = p0 * du[0] + p1 * du[1] + p2 * du[2] + p3 * du[3];
         pos += r * bv[j];
         ds += d * bv[j];
         dt += r * dv[j];

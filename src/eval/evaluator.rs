@@ -336,18 +336,28 @@ impl Evaluator {
                     dv: dt * scale,
                 })
             }
-            Node::Deep(d) => {
-                let fragment = &self.deep[d as usize];
-                let vertices: Vec<DVec3> = fragment
-                    .points
-                    .iter()
-                    .map(|&p| points[p as usize])
-                    .collect();
-                self.evaluate_deep(&fragment.nb, &vertices, s, t, scale)
-            }
+            Node::Deep(d) => self.evaluate_fragment(points, d, s, t, scale),
             Node::NoSurface => Err(self.no_surface_error(face)),
             Node::Split(_) => unreachable!("a descent ends below every split"),
         }
+    }
+
+    /// [`Evaluator::evaluate_deep`] in deep fragment `d` under `points`.
+    fn evaluate_fragment(
+        &self,
+        points: &[DVec3],
+        d: u32,
+        s: f64,
+        t: f64,
+        scale: f64,
+    ) -> Result<LimitSample> {
+        let fragment = &self.deep[d as usize];
+        let vertices: Vec<DVec3> = fragment
+            .points
+            .iter()
+            .map(|&p| points[p as usize])
+            .collect();
+        self.evaluate_deep(&fragment.nb, &vertices, s, t, scale)
     }
 
     /// The node below `root` that holds `(u, v)` (never a split), the point's coordinates

@@ -161,14 +161,8 @@ impl Evaluator {
             landings.push(match node {
                 Node::Patch(leaf) => Landing::Leaf { leaf, depth },
                 Node::Deep(d) => {
-                    let fragment = &self.deep[d as usize];
-                    let vertices: Vec<DVec3> = fragment
-                        .points
-                        .iter()
-                        .map(|&q| points[q as usize])
-                        .collect();
                     let sample = self
-                        .evaluate_deep(&fragment.nb, &vertices, s, t, scale)
+                        .evaluate_fragment(points, d, s, t, scale)
                         .map_err(|e| name_point(i, e))?;
                     deep.push(LimitSample {
                         position: sample.position,

@@ -5,7 +5,9 @@
 // arguments (each refined once, then merged). Built by cmake, not run by ctest:
 // `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [--memory] [mesh.obj...]`
 // (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
-// each side, untimed, for callgrind; `--memory`: the heap a built evaluator holds on each side), or `bench_eval --scale [--scale-min D] [--scale-max E]
+// each side, untimed, for callgrind; `--eval-only [--reps K]`: each side built once, then the
+// random points evaluated K times (1 by default: for callgrind), profsubd and Far alternated,
+// also with --scale; `--cpu-time`: time in the thread's processor time instead of wall-clock; `--memory`: the heap a built evaluator holds on each side), or `bench_eval --scale [--scale-min D] [--scale-max E]
 // [--scale-only FAMILY-PREFIX] [--scale-skip PARTS]`: build, position
 // update, evaluation and refinement at 10^D..10^E faces (3 and 6 by default) on random and
 // shape-derived meshes (scripts/plot_scale.py plots its rows), each side in its own child processes
@@ -402,6 +404,56 @@ void build_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh,
     profsubd_evaluator_free(ev);
 }
 
+// --eval-only: each side built once (untimed), then `reps` evaluations of the same `n` random
+// points (seed 7, as the full run), profsubd and Far's PatchTable + PatchMap alternated so that
+// a change in the machine's load hits both alike; prints every run and the best of each side.
+// With reps = 1 it is the run to profile (`valgrind --tool=callgrind --cache-sim=yes
+// --toggle-collect=profsubd_evaluator_evaluate` or `--toggle-collect='*far_evaluate*'`).
+void eval_only(const profsubd_test::OsdShape &shape, const profsubd_mesh *mesh, profsubd_options *opts, int n,
+               int reps) {
+    profsubd_options_set_threads(opts, 1);
+    profsubd_evaluator *ev = nullptr;
+    if (profsubd_evaluator_new(mesh, opts, &ev) != PROFSUBD_OK) {
+        std::fprintf(stderr, "build: %s\n", profsubd_last_error_message());
+        return;
+    }
+    profsubd_evaluator_set_threads(ev, 1);
+    std::unique_ptr<Far::TopologyRefiner> adaptive;
+    std::unique_ptr<Far::PatchTable> table;
+    std::unique_ptr<Far::PatchMap> pmap;
+    std::vector<profsubd_test::FarPoint> pp;
+    far_build(shape, adaptive, table, pmap, pp);
+    profsubd_test::FacePoints pts = profsubd_test::random_face_points(n, shape.num_faces(), 7);
+    std::vector<double> P(3 * n), DU(3 * n), DV(3 * n), Pfar(3 * n);
+    double t_ps = 1e300, t_far = 1e300;
+    for (int r = 0; r < reps; ++r) {
+        double a = best(1, [&] {
+            if (profsubd_evaluator_evaluate(ev, pts.faces.data(), pts.us.data(), pts.vs.data(), n, P.data(),
+                                            DU.data(), DV.data()) != PROFSUBD_OK)
+                std::fprintf(stderr, "evaluate: %s\n", profsubd_last_error_message());
+        });
+        double b = best(1, [&] { far_evaluate(*table, *pmap, pp, pts, Pfar.data(), DU.data(), DV.data()); });
+        t_ps = std::min(t_ps, a);
+        t_far = std::min(t_far, b);
+        std::printf("eval-only run %d: profsubd %8.2f ms, Far %8.2f ms, ratio %.3f\n", r + 1, 1e3 * a, 1e3 * b, a / b);
+    }
+    double maxdiff = 0;
+    for (int i = 0; i < 3 * n; ++i) maxdiff = std::max(maxdiff, std::fabs(P[i] - Pfar[i]));
+    uint64_t hash = 1469598103934665603ull;  // FNV-1a over profsubd's result bits
+    for (const std::vector<double> *a : {&P, &DU, &DV})
+        for (double x : *a) {
+            uint64_t b;
+            std::memcpy(&b, &x, sizeof b);
+            hash = (hash ^ b) * 1099511628211ull;
+        }
+    std::printf("eval-only: profsubd result bits hash %016llx\n", (unsigned long long)hash);
+    std::printf("eval-only: %d faces, %d points, best profsubd %.2f ms (%.1f ns/point), Far %.2f ms (%.1f ns/point), "
+                "ratio profsubd/Far PatchTable evaluate %.3f (target <= 0.67); max |profsubd - Far| %.3g (%s)\n",
+                shape.num_faces(), n, 1e3 * t_ps, 1e9 * t_ps / n, 1e3 * t_far, 1e9 * t_far / n, t_ps / t_far, maxdiff,
+                use_thread_cpu ? "thread processor time" : "wall-clock");
+    profsubd_evaluator_free(ev);
+}
+
 // Uniform in [0, 1) from the top 53 bits of a 64-bit Mersenne twister (the engine's output is
 // fixed by the standard; std::uniform_real_distribution's is not).
 double uniform(std::mt19937_64 &rng) { return (rng() >> 11) * 0x1.0p-53; }
@@ -711,8 +763,8 @@ SideResult far_refine_part(const ScaleCase &c) {
 // with its semi-sharp creases (kept at sharpness 5 at every level) and without them. Each
 // side's evaluator, update (Far) and refinement run in child processes, with the peak memory
 // of every stage (`mem` lines). One `row` line per mesh (scripts/plot_scale.py reads them),
-// `nan` where a part failed.
-void scale(int min_exp, int max_exp, const std::string &only) {
+// `nan` where a part failed. With `eval_reps` > 0 only the evaluation (`--eval-only`).
+void scale(int min_exp, int max_exp, const std::string &only, int eval_reps) {
     use_thread_cpu = true;
     print_far_steps = true;
     profsubd_test::OsdShape car;
@@ -765,6 +817,12 @@ void scale(int min_exp, int max_exp, const std::string &only) {
             }
             profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
             profsubd_options_set_threads(opts, 1);
+            if (eval_reps > 0) {
+                std::printf("%s:\n", family);
+                eval_only(shape, mesh.get(), opts, N, eval_reps);
+                profsubd_options_free(opts);
+                continue;
+            }
             profsubd_test::FacePoints pts = profsubd_test::random_face_points(N, nf, 7);
             std::vector<double> moved(shape.positions.size());
             for (size_t i = 0; i < moved.size(); ++i) moved[i] = 1.01 * shape.positions[i] + 0.001 * (i % 7);
@@ -805,6 +863,7 @@ void scale(int min_exp, int max_exp, const std::string &only) {
 
 int main(int argc, char **argv) {
     bool p2_only = false, build_only_mode = false, memory_only = false;
+    int eval_reps = 0;
     int scale_max = 0, scale_min = 3;
     std::string scale_only;
     std::vector<std::string> paths;
@@ -815,6 +874,12 @@ int main(int argc, char **argv) {
             build_only_mode = true;
         else if (std::string(argv[i]) == "--memory")
             memory_only = true;
+        else if (std::string(argv[i]) == "--cpu-time")
+            use_thread_cpu = true;
+        else if (std::string(argv[i]) == "--eval-only")
+            eval_reps = std::max(eval_reps, 1);
+        else if (std::string(argv[i]) == "--reps" && i + 1 < argc)
+            eval_reps = std::max(1, std::atoi(argv[++i]));
         else if (std::string(argv[i]) == "--scale")
             scale_max = std::max(scale_max, 6);
         else if (std::string(argv[i]) == "--scale-max" && i + 1 < argc)
@@ -829,7 +894,7 @@ int main(int argc, char **argv) {
             paths.push_back(argv[i]);
     }
     if (scale_max > 0) {
-        scale(scale_min, scale_max, scale_only);
+        scale(scale_min, scale_max, scale_only, eval_reps);
         return 0;
     }
     if (paths.empty())
@@ -857,6 +922,11 @@ int main(int argc, char **argv) {
     profsubd_options *opts = profsubd_test::capi_options(shape.options).release();
     if (memory_only) {
         memory(shape, mesh.get(), opts);
+        profsubd_options_free(opts);
+        return 0;
+    }
+    if (eval_reps > 0) {
+        eval_only(shape, mesh.get(), opts, 1000000, eval_reps);
         profsubd_options_free(opts);
         return 0;
     }

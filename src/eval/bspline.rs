@@ -75,21 +75,46 @@ impl BicubicPatch {
     /// Position and first derivatives `(P, ∂P/∂s, ∂P/∂t)` at local `(s, t)` in `[0, 1]²`.
     #[inline]
     pub fn evaluate(&self, s: f64, t: f64) -> (DVec3, DVec3, DVec3) {
-        let (bu, du) = cubic_basis(s);
-        let (bv, dv) = cubic_basis(t);
-        let mut pos = DVec3::ZERO;
-        let mut ds = DVec3::ZERO;
-        let mut dt = DVec3::ZERO;
-        for j in 0..4 {
-            let row = &self.points[4 * j..4 * j + 4];
-            let r = row[0] * bu[0] + row[1] * bu[1] + row[2] * bu[2] + row[3] * bu[3];
-            let d = row[0] * du[0] + row[1] * du[1] + row[2] * du[2] + row[3] * du[3];
-            pos += r * bv[j];
-            ds += d * bv[j];
-            dt += r * dv[j];
-        }
-        (pos, ds, dt)
+        tensor(|k| self.points[k], s, t)
     }
+
+    /// [`BicubicPatch::evaluate`] of the patch without sharp sides whose control point `k`
+    /// is `points[vertices[k]]`, read in place: the same operations, the same bits.
+    #[inline]
+    pub fn evaluate_indexed(
+        points: &[DVec3],
+        vertices: &[u32; 16],
+        s: f64,
+        t: f64,
+    ) -> (DVec3, DVec3, DVec3) {
+        tensor(|k| points[vertices[k] as usize], s, t)
+    }
+}
+
+/// The tensor-product sums of [`BicubicPatch::evaluate`] over control point `point(k)`,
+/// `k = 4 * j + i`.
+#[inline(always)]
+fn tensor(point: impl Fn(usize) -> DVec3, s: f64, t: f64) -> (DVec3, DVec3, DVec3) {
+    let (bu, du) = cubic_basis(s);
+    let (bv, dv) = cubic_basis(t);
+    let mut pos = DVec3::ZERO;
+    let mut ds = DVec3::ZERO;
+    let mut dt = DVec3::ZERO;
+    for j in 0..4 {
+        // Four locals, not an array: `array::map` kept the row in memory.
+        let (p0, p1, p2, p3) = (
+            point(4 * j),
+            point(4 * j + 1),
+            point(4 * j + 2),
+            point(4 * j + 3),
+        );
+        let r = p0 * bu[0] + p1 * bu[1] + p2 * bu[2] + p3 * bu[3];
+        let d = p0 * du[0] + p1 * du[1] + p2 * du[2] + p3 * du[3];
+        pos += r * bv[j];
+        ds += d * bv[j];
+        dt += r * dv[j];
+    }
+    (pos, ds, dt)
 }
 
 #[cfg(test)]

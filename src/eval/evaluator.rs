@@ -42,6 +42,7 @@ use crate::refine::step::refine_last;
 use crate::refine::{interpolate, Primvar, VertexOrder};
 use crate::topology::Level;
 
+pub(crate) use batch::{BatchOutput, NoSurface};
 use build::Builder;
 pub use primvar::PrimvarSamples;
 
@@ -325,36 +326,63 @@ impl Evaluator {
                 "(u, v) = ({u}, {v}) on face {face} is outside [0, 1]"
             )));
         }
-        let (mut node, mut s, mut t, mut scale) = (root, u, v, 1.0);
-        loop {
-            match node {
-                Node::Patch(p) => {
-                    let leaf = &self.patch_points[p as usize];
-                    let control = leaf.vertices.map(|v| points[v as usize]);
-                    let patch = BicubicPatch::with_boundary(control, leaf.boundary);
-                    let (position, ds, dt) = patch.evaluate(s, t);
-                    return Ok(LimitSample {
-                        position,
-                        du: ds * scale,
-                        dv: dt * scale,
-                    });
-                }
-                Node::Split(first) => {
-                    let (q, cs, ct) = quadrant(s, t);
-                    node = self.nodes[(first + q) as usize];
-                    (s, t, scale) = (cs, ct, scale * 2.0);
-                }
-                Node::Deep(d) => {
-                    let fragment = &self.deep[d as usize];
-                    let vertices: Vec<DVec3> = fragment
-                        .points
-                        .iter()
-                        .map(|&p| points[p as usize])
-                        .collect();
-                    return self.evaluate_deep(&fragment.nb, &vertices, s, t, scale);
-                }
-                Node::NoSurface => return Err(self.no_surface_error(face)),
+        let (node, s, t, scale, _) = self.descend(root, u, v);
+        match node {
+            Node::Patch(p) => {
+                let (position, ds, dt) = self.evaluate_leaf(points, p, s, t);
+                Ok(LimitSample {
+                    position,
+                    du: ds * scale,
+                    dv: dt * scale,
+                })
             }
+            Node::Deep(d) => self.evaluate_fragment(points, d, s, t, scale),
+            Node::NoSurface => Err(self.no_surface_error(face)),
+            Node::Split(_) => unreachable!("a descent ends below every split"),
+        }
+    }
+
+    /// [`Evaluator::evaluate_deep`] in deep fragment `d` under `points`.
+    fn evaluate_fragment(
+        &self,
+        points: &[DVec3],
+        d: u32,
+        s: f64,
+        t: f64,
+        scale: f64,
+    ) -> Result<LimitSample> {
+        let fragment = &self.deep[d as usize];
+        let vertices: Vec<DVec3> = fragment
+            .points
+            .iter()
+            .map(|&p| points[p as usize])
+            .collect();
+        self.evaluate_deep(&fragment.nb, &vertices, s, t, scale)
+    }
+
+    /// The node below `root` that holds `(u, v)` (never a split), the point's coordinates
+    /// in it, the derivatives' scale (`2^depth`) and its depth.
+    #[inline]
+    fn descend(&self, root: Node, u: f64, v: f64) -> (Node, f64, f64, f64, u8) {
+        let (mut node, mut s, mut t, mut scale, mut depth) = (root, u, v, 1.0, 0u8);
+        while let Node::Split(first) = node {
+            let (q, cs, ct) = quadrant(s, t);
+            node = self.nodes[(first + q) as usize];
+            (s, t, scale, depth) = (cs, ct, scale * 2.0, depth + 1);
+        }
+        (node, s, t, scale, depth)
+    }
+
+    /// Position and derivatives at `(s, t)` of leaf `leaf` under `points`: the patch's
+    /// points are read where they are, copied only to build phantom points.
+    #[inline]
+    fn evaluate_leaf(&self, points: &[DVec3], leaf: u32, s: f64, t: f64) -> (DVec3, DVec3, DVec3) {
+        let leaf = &self.patch_points[leaf as usize];
+        if leaf.boundary == 0 {
+            BicubicPatch::evaluate_indexed(points, &leaf.vertices, s, t)
+        } else {
+            let control = leaf.vertices.map(|v| points[v as usize]);
+            BicubicPatch::with_boundary(control, leaf.boundary).evaluate(s, t)
         }
     }
 
@@ -398,7 +426,9 @@ impl Evaluator {
     /// first bad point, naming its index; a point without limit surface is a bad point here
     /// (see [`Evaluator::evaluate_points`] for the marking alternative).
     pub fn evaluate_many(&self, faces: &[u32], u: &[f64], v: &[f64]) -> Result<Vec<LimitSample>> {
-        each_point(faces, u, v, self.threads, |f, u, v| self.evaluate(f, u, v))
+        let mut out = vec![LimitSample::default(); faces.len()];
+        self.evaluate_batch(Domain::Ptex, (faces, u, v), NoSurface::Error, &mut out[..])?;
+        Ok(out)
     }
 
     /// Whether parametric (Ptex) face `face` has a limit surface (see [`super::surface`]);
@@ -446,9 +476,9 @@ impl Evaluator {
         u: &[f64],
         v: &[f64],
     ) -> Result<Vec<Option<LimitSample>>> {
-        each_point(faces, u, v, self.threads, |f, u, v| {
-            self.evaluate_in(domain, f, u, v)
-        })
+        let mut out = vec![None; faces.len()];
+        self.evaluate_batch(domain, (faces, u, v), NoSurface::Mark, &mut out[..])?;
+        Ok(out)
     }
 
     /// Exact limit position and derivatives at every control vertex, in vertex order, `None`
@@ -606,6 +636,7 @@ fn faces_without_surface(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
         .collect()
 }
 
+mod batch;
 mod build;
 mod primvar;
 #[cfg(test)]

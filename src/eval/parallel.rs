@@ -52,6 +52,23 @@ pub(crate) fn on_threads<T: Send>(threads: usize, f: impl Fn(usize) -> T + Sync)
     })
 }
 
+/// `f(item)` for every item, each on its own thread (the first on the calling thread): the
+/// pieces of a batch that [`map_ranges`] split, with what each writes to.
+pub(crate) fn each_on_threads<T: Send>(items: Vec<T>, f: impl Fn(T) + Sync) {
+    let f = &f;
+    let mut items = items.into_iter();
+    let Some(first) = items.next() else {
+        return;
+    };
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = items.map(|item| scope.spawn(move || f(item))).collect();
+        f(first);
+        for h in handles {
+            h.join().unwrap_or_else(|p| std::panic::resume_unwind(p));
+        }
+    });
+}
+
 /// `f(i)` for every `i` in `0..n`, in order, on up to `threads` threads (0: all cores). Each
 /// item is computed exactly as on one thread, so the result does not depend on the thread
 /// count; on error, the error of the lowest failing index (as one thread would stop at).

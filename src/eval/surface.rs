@@ -45,11 +45,14 @@ pub(crate) fn vertices_with_surface_in(level: &Level) -> Vec<bool> {
 /// [`Error::InvalidArgument`] naming the first point (`what` and its index) that has none.
 pub fn require_surface(samples: Vec<Option<LimitSample>>, what: &str) -> Result<Vec<LimitSample>> {
     if let Some(i) = samples.iter().position(Option::is_none) {
-        return Err(Error::invalid_argument(format!(
-            "{what} {i} has no limit surface (strict mode)"
-        )));
+        return Err(no_surface_strict(what, i));
     }
     Ok(samples.into_iter().flatten().collect())
+}
+
+/// The strict-mode error of `what` number `i` without limit surface.
+pub(crate) fn no_surface_strict(what: &str, i: usize) -> Error {
+    Error::invalid_argument(format!("{what} {i} has no limit surface (strict mode)"))
 }
 
 #[cfg(test)]

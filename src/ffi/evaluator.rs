@@ -4,6 +4,7 @@ use std::mem::MaybeUninit;
 
 use glam::DVec3;
 
+use crate::eval::evaluator::{BatchOutput, NoSurface};
 use crate::eval::{require_surface, Domain, Evaluator, LimitSample};
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::handle::{self, Handle};
@@ -270,6 +271,82 @@ impl<'a> PointArgs<'a> {
     pub(crate) fn write(self, samples: &[Option<LimitSample>]) {
         write_marked(samples, self.positions, self.du, self.dv, self.has_surface);
     }
+
+    /// The output arrays, for [`Evaluator::evaluate_batch`] to write into.
+    fn output(self) -> PointsOut<'a> {
+        PointsOut {
+            positions: self.positions,
+            du: self.du,
+            dv: self.dv,
+            has_surface: self.has_surface,
+        }
+    }
+}
+
+/// A batch's output arrays (a piece of them on each thread): what
+/// [`Evaluator::evaluate_batch`] writes each sample into, once.
+struct PointsOut<'a> {
+    positions: &'a mut [MaybeUninit<f64>],
+    du: Option<&'a mut [MaybeUninit<f64>]>,
+    dv: Option<&'a mut [MaybeUninit<f64>]>,
+    has_surface: Option<&'a mut [MaybeUninit<u8>]>,
+}
+
+/// Both parts of an optional output split after `n` items.
+fn split_opt<T>(a: Option<&mut [T]>, n: usize) -> (Option<&mut [T]>, Option<&mut [T]>) {
+    match a {
+        Some(a) => {
+            let (x, y) = a.split_at_mut(n);
+            (Some(x), Some(y))
+        }
+        None => (None, None),
+    }
+}
+
+/// `value`'s coordinates into point `k` of `dst`.
+#[inline]
+fn put3(dst: &mut [MaybeUninit<f64>], k: usize, value: DVec3) {
+    for (d, x) in dst[3 * k..3 * k + 3].iter_mut().zip(value.to_array()) {
+        d.write(x);
+    }
+}
+
+impl BatchOutput for PointsOut<'_> {
+    fn split(self, n: usize) -> (Self, Self) {
+        let (p0, p1) = self.positions.split_at_mut(3 * n);
+        let (du0, du1) = split_opt(self.du, 3 * n);
+        let (dv0, dv1) = split_opt(self.dv, 3 * n);
+        let (m0, m1) = split_opt(self.has_surface, n);
+        (
+            PointsOut {
+                positions: p0,
+                du: du0,
+                dv: dv0,
+                has_surface: m0,
+            },
+            PointsOut {
+                positions: p1,
+                du: du1,
+                dv: dv1,
+                has_surface: m1,
+            },
+        )
+    }
+
+    #[inline]
+    fn put(&mut self, k: usize, sample: Option<LimitSample>) {
+        let s = sample.unwrap_or(LimitSample::NO_SURFACE);
+        put3(self.positions, k, s.position);
+        if let Some(du) = self.du.as_deref_mut() {
+            put3(du, k, s.du);
+        }
+        if let Some(dv) = self.dv.as_deref_mut() {
+            put3(dv, k, s.dv);
+        }
+        if let Some(mask) = self.has_surface.as_deref_mut() {
+            mask[k].write(u8::from(sample.is_some()));
+        }
+    }
 }
 
 /// Write the samples (`None`: NaN) and the has-surface mask into the caller's buffers.
@@ -437,11 +514,13 @@ pub unsafe extern "C" fn profsubd_evaluator_evaluate_points(
         let ev = evaluator_arg(evaluator)?;
         let strict = strict_arg(strict)?;
         let args = PointArgs::read(domain, faces, u, v, n, positions, du, dv, has_surface)?;
-        let samples = ev.evaluate_points(args.domain, args.faces, args.u, args.v)?;
-        if strict {
-            require_surface(samples.clone(), "point")?;
-        }
-        args.write(&samples);
+        let no_surface = if strict {
+            NoSurface::Strict
+        } else {
+            NoSurface::Mark
+        };
+        let (domain, points) = (args.domain, (args.faces, args.u, args.v));
+        ev.evaluate_batch(domain, points, no_surface, args.output())?;
         Ok(())
     })
 }

@@ -9,8 +9,10 @@
 
 use glam::DVec3;
 
-use super::{each_point, Evaluator};
+use super::{BatchOutput, Evaluator, NoSurface};
 use crate::error::{Error, Result};
+use crate::eval::domain::Domain;
+use crate::eval::sample::LimitSample;
 
 /// Limit values and first derivatives of a primvar of width `dim` at a batch of points.
 #[derive(Debug, Clone, PartialEq)]
@@ -82,16 +84,69 @@ impl Evaluator {
                 })
                 .collect();
             let points = self.program.run(&control);
-            let samples = each_point(faces, u, v, self.threads, |f, u, v| {
-                self.evaluate_with(&points, f, u, v)
-            })?;
-            for (i, s) in samples.iter().enumerate() {
-                let at = i * dim + first..i * dim + first + width;
-                out.values[at.clone()].copy_from_slice(&s.position.to_array()[..width]);
-                out.du[at.clone()].copy_from_slice(&s.du.to_array()[..width]);
-                out.dv[at].copy_from_slice(&s.dv.to_array()[..width]);
-            }
+            let columns = Columns {
+                values: &mut out.values,
+                du: &mut out.du,
+                dv: &mut out.dv,
+                dim,
+                first,
+                width,
+            };
+            self.evaluate_batch_with(
+                &points,
+                Domain::Ptex,
+                (faces, u, v),
+                NoSurface::Error,
+                columns,
+            )?;
         }
         Ok(out)
+    }
+}
+
+/// Columns `first..first + width` of a primvar result of width `dim` (a piece of its rows
+/// on each thread): where one pass of three components is written.
+struct Columns<'a> {
+    values: &'a mut [f64],
+    du: &'a mut [f64],
+    dv: &'a mut [f64],
+    dim: usize,
+    first: usize,
+    width: usize,
+}
+
+impl BatchOutput for Columns<'_> {
+    fn split(self, n: usize) -> (Self, Self) {
+        let at = n * self.dim;
+        let (values, values_rest) = self.values.split_at_mut(at);
+        let (du, du_rest) = self.du.split_at_mut(at);
+        let (dv, dv_rest) = self.dv.split_at_mut(at);
+        let (dim, first, width) = (self.dim, self.first, self.width);
+        (
+            Columns {
+                values,
+                du,
+                dv,
+                dim,
+                first,
+                width,
+            },
+            Columns {
+                values: values_rest,
+                du: du_rest,
+                dv: dv_rest,
+                dim,
+                first,
+                width,
+            },
+        )
+    }
+
+    fn put(&mut self, k: usize, sample: Option<LimitSample>) {
+        let s = sample.unwrap_or(LimitSample::NO_SURFACE);
+        let at = k * self.dim + self.first..k * self.dim + self.first + self.width;
+        self.values[at.clone()].copy_from_slice(&s.position.to_array()[..self.width]);
+        self.du[at.clone()].copy_from_slice(&s.du.to_array()[..self.width]);
+        self.dv[at].copy_from_slice(&s.dv.to_array()[..self.width]);
     }
 }

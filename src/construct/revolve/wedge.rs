@@ -761,10 +761,11 @@ impl MeridianPlane {
             CapLayout::Winslow => winslow_smooth(&mut grid, |g| check_unfolded(g).is_ok()),
             CapLayout::Rungs => {
                 let (n1, n2) = (grid.len() - 1, grid[0].len() - 1);
-                for i in 1..n1 {
+                let (axis, column) = (grid[0].clone(), grid[n1].clone());
+                for (i, row) in grid.iter_mut().enumerate().take(n1).skip(1) {
                     let t = i as f64 / n1 as f64;
-                    for j in 1..n2 {
-                        grid[i][j] = (1.0 - t) * grid[0][j] + t * grid[n1][j];
+                    for (j, p) in row.iter_mut().enumerate().take(n2).skip(1) {
+                        *p = (1.0 - t) * axis[j] + t * column[j];
                     }
                 }
             }
@@ -1107,6 +1108,7 @@ mod tests {
     }
 
     #[test]
+    #[allow(clippy::needless_range_loop)] // grid[i][j] against column[j]: two indices
     fn rung_grids_are_linear_across_and_follow_the_rim_control_points() {
         // A stem-like plane: a flat bottom radial line, a column rising at r = 0.1 to 0.3,
         // a flat top; the rung grid's rows are evenly spaced straight lines from the axis

@@ -62,7 +62,7 @@
 //! `a` whose column part rises strictly is taken; each of its vertices is joined to an axis
 //! vertex at its height by a *rung*: a straight grid line of evenly spaced vertices. The
 //! rungs are placed on the rim's *control points* (what the fit gives the creased rim,
-//! computed beforehand: [`MeridianPlane::control_points`]), the axis vertices at their
+//! computed beforehand: `MeridianPlane::control_points`), the axis vertices at their
 //! heights, and every rung at a corner of the column is creased. Why such a cap cannot fold
 //! between its end rows: each block between two creased rungs is a structured grid with
 //! creased sides and corners only at its four corners, so its limit is the tensor-product

@@ -475,11 +475,7 @@ impl Wedge {
     fn rim_corners(&self, rim: &[u32]) -> Vec<bool> {
         let mut edges = self.creased.clone();
         edges.extend(rim.windows(2).map(|e| (e[0].min(e[1]), e[0].max(e[1]))));
-        let mut degree = std::collections::HashMap::new();
-        for (a, b) in edges {
-            *degree.entry(a).or_insert(0usize) += 1;
-            *degree.entry(b).or_insert(0usize) += 1;
-        }
+        let degree = crease_degrees(&edges);
         let tagged: HashSet<u32> = self.parts.corners.iter().map(|c| c.vertex).collect();
         rim.iter()
             .enumerate()
@@ -492,11 +488,7 @@ impl Wedge {
     /// or more creases): the rung then splits the cap into blocks whose rims have corners
     /// only at the blocks' four corners, which the ruled limit needs (module documentation).
     fn crease_corner_rungs(&mut self, ids: &[Vec<u32>]) {
-        let mut degree = std::collections::HashMap::new();
-        for &(a, b) in &self.creased {
-            *degree.entry(a).or_insert(0usize) += 1;
-            *degree.entry(b).or_insert(0usize) += 1;
-        }
+        let degree = crease_degrees(&self.creased);
         let n2 = ids[0].len() - 1;
         let column = &ids[ids.len() - 1];
         for j in 1..n2 {
@@ -513,11 +505,7 @@ impl Wedge {
     /// a sector's apex, the corner rule cannot fill more than 180° between two creases (a
     /// crease ring meeting a profile that turns towards the axis, a cup's foot or a neck).
     fn split_reflex_corners(&mut self, ids: &[Vec<u32>], candidates: &[u32]) {
-        let mut degree = std::collections::HashMap::new();
-        for &(a, b) in &self.creased {
-            *degree.entry(a).or_insert(0usize) += 1;
-            *degree.entry(b).or_insert(0usize) += 1;
-        }
+        let degree = crease_degrees(&self.creased);
         let (n1, n2) = (ids.len() - 1, ids[0].len() - 1);
         let at = |v: u32| self.parts.positions[v as usize];
         let mut splits = Vec::new();
@@ -773,6 +761,16 @@ impl MeridianPlane {
         check_unfolded(&grid)?;
         Ok(grid)
     }
+}
+
+/// How many of the crease edges `edges` (as (min, max)) meet at each vertex.
+fn crease_degrees(edges: &HashSet<(u32, u32)>) -> std::collections::HashMap<u32, usize> {
+    let mut degree = std::collections::HashMap::new();
+    for &(a, b) in edges {
+        *degree.entry(a).or_insert(0usize) += 1;
+        *degree.entry(b).or_insert(0usize) += 1;
+    }
+    degree
 }
 
 /// The control points `p` of a crease chain whose limit points are `d`, its ends fixed:

@@ -128,6 +128,29 @@ fn spheres_and_goblets_by_revolution_do_not_fold() {
 }
 
 #[test]
+fn capped_goblet_wedges_with_a_thin_stem_do_not_fold() {
+    // The solid goblet's meridian caps at 32 x 16: every Coons and Winslow layout's limit
+    // folded in the thin stem (14 faces, refused); the rung caps (`revolve::wedge`,
+    // `CapLayout::Rungs`) have a ruled limit there, as close to the design and as fair as
+    // the open turns.
+    for angle in [90.0, 180.0, 270.0] {
+        let mut input = RevolveInput::new(goblet());
+        (input.angle_deg, input.samples_around, input.samples_profile) = (angle, 32, 32);
+        let settings = Settings {
+            caps: profsubd::Caps::Flat,
+            ..Settings::default()
+        };
+        let r = revolve::build(&input, &settings)
+            .unwrap()
+            .surface_report()
+            .unwrap()
+            .clone();
+        assert_valid(&format!("capped goblet {angle}° 32x16"), &r, 1e-3);
+        assert!(r.undulation > 0.9 && r.undulation < 1.1, "{r:?}");
+    }
+}
+
+#[test]
 fn bottles_with_flat_bases_do_not_fold() {
     let (input, settings) = read_json::<ProfileInput>(&example("profiles", "bottle")).unwrap();
     for (around, along) in SAMPLINGS {

@@ -55,7 +55,7 @@ use crate::fit::Role;
 use crate::mesh::MeshParts;
 pub use input::RevolveInput;
 pub use profile::{cap_point, revolve_point, sector_point, RevolvedProfile};
-use wedge::wedge_parts;
+use wedge::{wedge_parts, CapLayout};
 
 /// What [`RevolveInput::rings`] lays out along the profile.
 struct Rings {
@@ -101,19 +101,21 @@ impl RevolveInput {
     /// [`RevolveInput::mesh_parts`] and the design surface (the surface of revolution of the
     /// profile curve) on every face's lattice ([`crate::construct::design`]).
     pub fn cage(&self, settings: &Settings) -> Result<(MeshParts, DesignLattice)> {
-        let (parts, lattice, _) = self.layout(settings, None)?.0;
+        let (parts, lattice, _) = self.layout(settings, None, false)?.0;
         Ok((parts, lattice))
     }
 
     /// [`RevolveInput::cage`], and which vertices are free of data (the flat meridian caps'
     /// inside and axis, [`wedge`]): the fit keeps them as control points. `pole_room`: a
     /// partial turn's pole sectors get room ([`widen_pole_runs`]); the `bool`: whether that
-    /// changed the rings.
+    /// changed the rings. `rungs`: the meridian caps are laid out as [`CapLayout::Rungs`]
+    /// (else Coons grids, then Winslow-relaxed ones).
     #[allow(clippy::type_complexity)]
     fn layout(
         &self,
         settings: &Settings,
         pole_room: Option<usize>,
+        rungs: bool,
     ) -> Result<((MeshParts, DesignLattice, Vec<Role>), bool)> {
         let profile = self.profile_curve(settings)?;
         let rings = self.rings(settings, &profile, pole_room)?;
@@ -128,9 +130,14 @@ impl RevolveInput {
             vec![radial]
         };
         let mut first_error = None;
-        for smoothing in [false, true] {
+        let caps: &[CapLayout] = if rungs {
+            &[CapLayout::Rungs]
+        } else {
+            &[CapLayout::Coons, CapLayout::Winslow]
+        };
+        for &cap in caps {
             for &spread in &spreads {
-                match self.layout_with(settings, &profile, grid, ring_s, spread, smoothing) {
+                match self.layout_with(settings, &profile, grid, ring_s, spread, cap) {
                     Ok(layout) => return Ok((layout, rings.widened)),
                     Err(e @ Error::InvalidArgument(_)) => {
                         first_error.get_or_insert(e);
@@ -144,7 +151,7 @@ impl RevolveInput {
 
     /// [`RevolveInput::layout`] with the pole sectors' radial samples `radial` (empty: evenly
     /// in the curve parameter, [`cap_point`]; a full turn has none) and the meridian caps'
-    /// `smoothing` ([`wedge_parts`]).
+    /// `layout` ([`wedge_parts`]).
     fn layout_with(
         &self,
         settings: &Settings,
@@ -152,7 +159,7 @@ impl RevolveInput {
         grid: &SweepGrid,
         ring_s: &[f64],
         radial: &[Vec<f64>; 2],
-        smoothing: bool,
+        cap: CapLayout,
     ) -> Result<(MeshParts, DesignLattice, Vec<Role>)> {
         let design = RevolveDesign {
             profile,
@@ -167,7 +174,7 @@ impl RevolveInput {
                 grid_mesh_coords(grid, &|end, v| design.cap(end, v.radius, TAU * v.turn))?;
             (parts, coords, Vec::new())
         } else {
-            wedge_parts(self, settings, profile, grid, ring_s, radial, smoothing)?
+            wedge_parts(self, settings, profile, grid, ring_s, radial, cap)?
         };
         let lattice = parts_lattice(&parts, &coords, &design, &settings.control)?;
         Ok((parts, lattice, roles))
@@ -466,11 +473,14 @@ impl Design for RevolveDesign<'_> {
 /// `targets` holds their limit positions); if that folds too, or the first layout has no
 /// unfolded meridian cap, the same two fits are tried on the rings with the pole sectors'
 /// runs widened to `k / 2 + 1`, then `k + 1` profile intervals (`n = 4k` meridian
-/// intervals; `widen_pole_runs`), and the turn is refused only if every one folds. Turns
-/// whose first layout fits without folding are unchanged.
+/// intervals; `widen_pole_runs`), and the turn is refused only if every one folds. With
+/// flat caps, each ring placement whose fits fold is tried once more with the meridian caps
+/// laid out as rungs ([`wedge::CapLayout::Rungs`], whose limit is ruled and cannot fold
+/// between the end rows) before the next placement. Turns whose first layout fits without
+/// folding are unchanged.
 pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
     if input.full_turn() {
-        let ((parts, design, roles), _) = input.layout(settings, None)?;
+        let ((parts, design, roles), _) = input.layout(settings, None, false)?;
         return Fitted::fit_free(parts, settings, design, &roles);
     }
     // The rings as sampled first; only where that layout or its fit folds, the pole
@@ -478,9 +488,17 @@ pub fn build(input: &RevolveInput, settings: &Settings) -> Result<Fitted> {
     // over about 2 profile intervals, the ratio of a full turn's grid cap), then to `k + 1`
     // ([`widen_pole_runs`]).
     let k = input.samples_around / 4;
+    let rungs: &[bool] = if settings.caps == Caps::Flat {
+        &[false, true]
+    } else {
+        &[false]
+    };
     let mut outcome = None;
-    for room in [None, Some(k / 2 + 1), Some(k + 1)] {
-        let layout = match input.layout(settings, room) {
+    for (room, rungs) in [None, Some(k / 2 + 1), Some(k + 1)]
+        .into_iter()
+        .flat_map(|room| rungs.iter().map(move |&r| (room, r)))
+    {
+        let layout = match input.layout(settings, room, rungs) {
             Ok((_, false)) if room.is_some() => continue,
             Ok((layout, _)) => layout,
             Err(e @ Error::InvalidArgument(_)) => {

@@ -56,6 +56,28 @@
 //! interior tangles next to it. A profile for which no layout is found either (a hollow
 //! glass whose bowl and foot both reach the axis) is refused.
 //!
+//! *Rung caps* ([`CapLayout::Rungs`], tried by `super::build` where the fit of those
+//! layouts folds: a goblet's thin stem at 32 x 16, whose Coons cells are 60 times longer
+//! than wide and bend, so the limit of the unfolded net folded in-plane). The smallest split
+//! `a` whose column part rises strictly is taken; each of its vertices is joined to an axis
+//! vertex at its height by a *rung*: a straight grid line of evenly spaced vertices. The
+//! rungs are placed on the rim's *control points* (what the fit gives the creased rim,
+//! computed beforehand: `MeridianPlane::control_points`), the axis vertices at their
+//! heights, and every rung at a corner of the column is creased. Why such a cap cannot fold
+//! between its end rows: each block between two creased rungs is a structured grid with
+//! creased sides and corners only at its four corners, so its limit is the tensor-product
+//! cubic B-spline of the net (the crease's ghost points). Across the rungs the net is linear
+//! in the grid index, `P[i][j] = (1 − i/n) A[j] + (i/n) C[j]`, and cubic B-splines
+//! reproduce linear functions, so the limit is exactly the ruled map
+//! `S(u, v) = (1 − u) A(v) + u C(v)`, `A` and `C` the B-spline curves of the axis and
+//! column control points. With `A(v) = (0, z_C(v))` its Jacobian is
+//! `det(C − A, (1 − u) A' + u C') = r_C(v) z_C'(v)` for every `u`: positive wherever the
+//! column's control points have `r > 0` and rising heights (a B-spline lies in the convex
+//! hull of its control points and its derivative in the cone of their differences), which
+//! is what the layout requires. Only the two rows of faces next to the end rows (the
+//! sectors' radial lines, not straight or not evenly spaced) are outside this argument; the
+//! fold check certifies them.
+//!
 //! Where the column turns towards the axis at a crease ring (a cup's foot, a neck), the cap
 //! spans a reflex angle at that corner; the grid line from it across the cap is then creased
 //! too (to the axis, a crease), for the same reason as at a sector's apex.
@@ -95,6 +117,22 @@ const CHORD_SHARES: [f64; 4] = [0.02, 0.1, 0.3, 1.0];
 
 /// Most splits of the meridian cap layout tried beyond `a = 0`.
 const MAX_SPLITS: usize = 32;
+
+/// How a meridian cap's structured grid is laid out ([`wedge_parts`]; `super::build` tries
+/// them in this order where the fit of the previous one folds).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CapLayout {
+    /// The best-shaped unfolded Coons grid over the splits and axis spacings tried.
+    Coons,
+    /// [`CapLayout::Coons`], and where every Coons grid folds, the first that no longer
+    /// folds after relaxing towards the Winslow grid.
+    Winslow,
+    /// Rungs: split `a = 0`, each column vertex joined to the axis vertex at its height by
+    /// a straight grid line of evenly spaced vertices, and that line creased where the
+    /// column has a corner (see the module documentation: its limit is ruled, and cannot
+    /// fold where the column rises). Only for a column rising strictly between the apexes.
+    Rungs,
+}
 
 /// A sector closing one end ring: its apex and its two radial lines.
 struct Sector {
@@ -342,18 +380,30 @@ impl Wedge {
         column: &[u32],
         bottom: &[u32],
         top: &[u32],
-        smoothing: bool,
-        shared: &mut Option<(usize, bool, Vec<u32>)>,
+        layout: CapLayout,
+        shared: &mut Option<(usize, CapLayout, Vec<u32>)>,
     ) -> Result<()> {
         let rz = |w: &Wedge, v: u32| {
             let p = w.parts.positions[v as usize];
             DVec2::new(p.truncate().length(), p.z)
         };
-        let plane = MeridianPlane {
+        let mut plane = MeridianPlane {
             column: column.iter().map(|&v| rz(self, v)).collect(),
             bottom: bottom.iter().map(|&v| rz(self, v)).collect(),
             top: top.iter().map(|&v| rz(self, v)).collect(),
         };
+        if shared.as_ref().map_or(layout, |s| s.1) == CapLayout::Rungs {
+            // Rungs run between the rim's control points (what the fit will give it), so
+            // that the cap's limit is exactly ruled (module documentation).
+            let rim: Vec<u32> = bottom
+                .iter()
+                .chain(&column[1..column.len() - 1])
+                .chain(top.iter().rev())
+                .copied()
+                .collect();
+            let corners = self.rim_corners(&rim);
+            plane = plane.control_points(&corners);
+        }
         let (z0, z1) = (plane.bottom[0].y, plane.top[0].y);
         if z0 == z1 {
             return Err(Error::invalid_argument(format!(
@@ -362,15 +412,15 @@ impl Wedge {
             )));
         }
         let (a, grid) = match shared {
-            Some((a, smooth, axis)) => {
+            Some((a, built, axis)) => {
                 let u = axis
                     .iter()
                     .map(|&v| (self.parts.positions[v as usize].z - z0) / (z1 - z0))
                     .collect();
-                (*a, plane.grid(*a, u, *smooth)?)
+                (*a, plane.grid(*a, u, *built)?)
             }
             None => {
-                let (a, smooth, grid) = plane.choose(smoothing)?;
+                let (a, built, grid) = plane.choose(layout)?;
                 let axis: Vec<u32> = grid[0]
                     .iter()
                     .enumerate()
@@ -380,7 +430,7 @@ impl Wedge {
                         _ => self.add_vertex(DVec3::new(0.0, 0.0, p.y), DesignCoord::Planar),
                     })
                     .collect();
-                *shared = Some((a, smooth, axis));
+                *shared = Some((a, built, axis));
                 (a, grid)
             }
         };
@@ -412,8 +462,42 @@ impl Wedge {
             }
         }
         self.add_patch(grid_quads(&ids), true);
+        if shared.as_ref().expect("set above").1 == CapLayout::Rungs {
+            self.crease_corner_rungs(&ids);
+        }
         self.split_reflex_corners(&ids, &column[1..rows]);
         Ok(())
+    }
+
+    /// Which vertices of the closed cap rim `rim` (bottom apex, bottom radial line, column,
+    /// top radial line, top apex) are corners once the rim's edges are creased: three or more
+    /// creases ([`Wedge::finish`]), a tagged corner, or an apex.
+    fn rim_corners(&self, rim: &[u32]) -> Vec<bool> {
+        let mut edges = self.creased.clone();
+        edges.extend(rim.windows(2).map(|e| (e[0].min(e[1]), e[0].max(e[1]))));
+        let degree = crease_degrees(&edges);
+        let tagged: HashSet<u32> = self.parts.corners.iter().map(|c| c.vertex).collect();
+        rim.iter()
+            .enumerate()
+            .map(|(i, v)| i == 0 || i + 1 == rim.len() || tagged.contains(v) || degree[v] >= 3)
+            .collect()
+    }
+
+    /// Crease every rung of a [`CapLayout::Rungs`] grid `ids` (`ids[i][j]`, `i = 0` the
+    /// axis, the last `i` the column) whose column vertex is a corner of the cap's rim (three
+    /// or more creases): the rung then splits the cap into blocks whose rims have corners
+    /// only at the blocks' four corners, which the ruled limit needs (module documentation).
+    fn crease_corner_rungs(&mut self, ids: &[Vec<u32>]) {
+        let degree = crease_degrees(&self.creased);
+        let n2 = ids[0].len() - 1;
+        let column = &ids[ids.len() - 1];
+        for j in 1..n2 {
+            if degree.get(&column[j]).copied().unwrap_or(0) >= 3 {
+                for w in ids.windows(2) {
+                    self.crease(w[0][j], w[1][j]);
+                }
+            }
+        }
     }
 
     /// Crease the grid line from each corner (three creases) among `candidates` on the
@@ -421,11 +505,7 @@ impl Wedge {
     /// a sector's apex, the corner rule cannot fill more than 180° between two creases (a
     /// crease ring meeting a profile that turns towards the axis, a cup's foot or a neck).
     fn split_reflex_corners(&mut self, ids: &[Vec<u32>], candidates: &[u32]) {
-        let mut degree = std::collections::HashMap::new();
-        for &(a, b) in &self.creased {
-            *degree.entry(a).or_insert(0usize) += 1;
-            *degree.entry(b).or_insert(0usize) += 1;
-        }
+        let degree = crease_degrees(&self.creased);
         let (n1, n2) = (ids.len() - 1, ids[0].len() - 1);
         let at = |v: u32| self.parts.positions[v as usize];
         let mut splits = Vec::new();
@@ -512,14 +592,52 @@ struct MeridianPlane {
 }
 
 impl MeridianPlane {
+    /// The rim's control points under an infinitely sharp crease: between two corners
+    /// (`corners`, one flag per rim point from the bottom apex round to the top apex) the
+    /// crease's limit is the cubic B-spline of its control points, so a point's limit is
+    /// `(p₋ + 4p + p₊) / 6`; solving that (tridiagonal, the corners fixed) gives the
+    /// control points the fit finds for the data points (the creases decouple the rim).
+    fn control_points(&self, corners: &[bool]) -> MeridianPlane {
+        let (k, rows) = (self.bottom.len() - 1, self.column.len() - 1);
+        let mut rim: Vec<DVec2> = self.bottom.clone();
+        rim.extend_from_slice(&self.column[1..rows]);
+        rim.extend(self.top.iter().rev());
+        let mut control = rim.clone();
+        let mut start = 0;
+        for end in (1..rim.len()).filter(|&i| corners[i]) {
+            solve_crease(&rim[start..=end], &mut control[start..=end]);
+            start = end;
+        }
+        let mut top: Vec<DVec2> = control[control.len() - k - 1..].to_vec();
+        top.reverse();
+        MeridianPlane {
+            bottom: control[..=k].to_vec(),
+            column: control[k..=k + rows].to_vec(),
+            top,
+        }
+    }
+
     /// The best-shaped unfolded layout ([`min_corner_sine`]): split `a = 0, 1, ...` (at most [`MAX_SPLITS`] values,
     /// evenly spread, so that a refusal stays cheap), and for each the axis spacings of
     /// [`MeridianPlane::axis_spacings`]; the Coons grids first, and only if every one of
     /// them folds, the first of the same layouts that folds no longer after
-    /// [`winslow_smooth`] if `smoothing` allows it (the `bool`: whether the grid was
-    /// smoothed).
-    fn choose(&self, smoothing: bool) -> Result<(usize, bool, Vec<Vec<DVec2>>)> {
+    /// [`winslow_smooth`] if `layout` is [`CapLayout::Winslow`] (the returned layout: how the
+    /// grid was built); [`CapLayout::Rungs`]: only the rung grid (module documentation).
+    fn choose(&self, layout: CapLayout) -> Result<(usize, CapLayout, Vec<Vec<DVec2>>)> {
         let rows = self.column.len() - 1;
+        let last = (rows - 1) / 2;
+        if layout == CapLayout::Rungs {
+            // The smallest split whose column part rises strictly: the sides then take the
+            // column's runs along the ends' heights (a flat foot's underside, a lid).
+            let a = (0..=last).find(|&a| self.rises(a)).ok_or_else(|| {
+                Error::invalid_argument(
+                    "caps: the rung layout of a meridian cap needs the profile's rings to \
+                         rise strictly between its two ends",
+                )
+            })?;
+            let u = self.axis_spacings(a).remove(0);
+            return Ok((a, layout, self.grid(a, u, layout)?));
+        }
         let last = (rows - 1) / 2;
         let splits: Vec<usize> = if last < MAX_SPLITS {
             (0..=last).collect()
@@ -530,7 +648,7 @@ impl MeridianPlane {
         let mut best: Option<(f64, usize, Vec<Vec<DVec2>>)> = None;
         for &a in &splits {
             for u in self.axis_spacings(a) {
-                match self.grid(a, u, false) {
+                match self.grid(a, u, CapLayout::Coons) {
                     Ok(grid) => {
                         let q = min_corner_sine(&grid);
                         if best.as_ref().map_or(true, |b| q > b.0) {
@@ -544,16 +662,16 @@ impl MeridianPlane {
             }
         }
         if let Some((_, a, grid)) = best {
-            return Ok((a, false, grid));
+            return Ok((a, CapLayout::Coons, grid));
         }
         let first_error = first_error.expect("at least one layout is tried");
-        if !smoothing {
+        if layout == CapLayout::Coons {
             return Err(first_error);
         }
         for &a in &splits {
             for u in self.axis_spacings(a) {
-                if let Ok(grid) = self.grid(a, u, true) {
-                    return Ok((a, true, grid));
+                if let Ok(grid) = self.grid(a, u, layout) {
+                    return Ok((a, layout, grid));
                 }
             }
         }
@@ -568,9 +686,7 @@ impl MeridianPlane {
         let (z0, z1) = (self.bottom[0].y, self.top[0].y);
         let mid = &self.column[a..self.column.len() - a];
         let n = mid.len() - 1;
-        let rises = |p: f64, q: f64| (q - p) * (z1 - z0) > 0.0;
-        let monotone = mid.windows(2).all(|w| rises(w[0].y, w[1].y))
-            && (n < 2 || (rises(z0, mid[1].y) && rises(mid[n - 1].y, z1)));
+        let monotone = rising(z0, z1, mid);
         let mut height = Vec::with_capacity(n + 1);
         let mut chord = vec![0.0];
         for (i, c) in mid.iter().enumerate() {
@@ -593,12 +709,21 @@ impl MeridianPlane {
         mixes.iter().map(|&m| blend(m)).collect()
     }
 
+    /// Whether the column's part `column[a..=rows - a]` rises strictly from the bottom
+    /// apex's height to the top apex's ([`CapLayout::Rungs`]).
+    fn rises(&self, a: usize) -> bool {
+        let mid = &self.column[a..self.column.len() - a];
+        rising(self.bottom[0].y, self.top[0].y, mid)
+    }
+
     /// The grid `x[i][j]` of split `a` with axis fractions `u` (`rows − 2a + 1` values):
     /// `x[i][0]` runs from the bottom apex along the bottom radial line and up the column to
     /// `column[a]`, `x[i][n2]` from the top apex along the top radial line and down the column
     /// to `column[rows − a]`, `x[0][j]` up the axis, `x[n1][j]` along `column[a..=rows − a]`.
-    /// `smooth`: the Coons grid's inside relaxed by [`winslow_smooth`]. Errors if it folds.
-    fn grid(&self, a: usize, u: Vec<f64>, smooth: bool) -> Result<Vec<Vec<DVec2>>> {
+    /// `layout`: [`CapLayout::Winslow`] relaxes the Coons grid's inside by
+    /// [`winslow_smooth`]; [`CapLayout::Rungs`] puts it on the straight lines from each axis
+    /// vertex to its column vertex instead, evenly. Errors if it folds.
+    fn grid(&self, a: usize, u: Vec<f64>, layout: CapLayout) -> Result<Vec<Vec<DVec2>>> {
         let (k, rows) = (self.bottom.len() - 1, self.column.len() - 1);
         let (z0, z1) = (self.bottom[0].y, self.top[0].y);
         let side = |radial: &[DVec2], down: bool| -> Vec<DVec2> {
@@ -619,12 +744,74 @@ impl MeridianPlane {
             &uniform(k + a),
             &u,
         );
-        if smooth {
-            winslow_smooth(&mut grid, |g| check_unfolded(g).is_ok());
+        match layout {
+            CapLayout::Coons => {}
+            CapLayout::Winslow => winslow_smooth(&mut grid, |g| check_unfolded(g).is_ok()),
+            CapLayout::Rungs => {
+                let (n1, n2) = (grid.len() - 1, grid[0].len() - 1);
+                let (axis, column) = (grid[0].clone(), grid[n1].clone());
+                for (i, row) in grid.iter_mut().enumerate().take(n1).skip(1) {
+                    let t = i as f64 / n1 as f64;
+                    for (j, p) in row.iter_mut().enumerate().take(n2).skip(1) {
+                        *p = (1.0 - t) * axis[j] + t * column[j];
+                    }
+                }
+            }
         }
         check_unfolded(&grid)?;
         Ok(grid)
     }
+}
+
+/// How many of the crease edges `edges` (as (min, max)) meet at each vertex.
+fn crease_degrees(edges: &HashSet<(u32, u32)>) -> std::collections::HashMap<u32, usize> {
+    let mut degree = std::collections::HashMap::new();
+    for &(a, b) in edges {
+        *degree.entry(a).or_insert(0usize) += 1;
+        *degree.entry(b).or_insert(0usize) += 1;
+    }
+    degree
+}
+
+/// The control points `p` of a crease chain whose limit points are `d`, its ends fixed:
+/// `(p[i − 1] + 4 p[i] + p[i + 1]) / 6 = d[i]` inside (Thomas algorithm; diagonally
+/// dominant, so stable).
+fn solve_crease(d: &[DVec2], p: &mut [DVec2]) {
+    let n = d.len();
+    if n < 3 {
+        return;
+    }
+    // Unknowns p[1..n-1]: p[i-1] + 4 p[i] + p[i+1] = 6 d[i].
+    let mut c = vec![0.0; n];
+    let mut r = vec![DVec2::ZERO; n];
+    for i in 1..n - 1 {
+        let mut rhs = 6.0 * d[i];
+        if i == 1 {
+            rhs -= d[0];
+        }
+        if i == n - 2 {
+            rhs -= d[n - 1];
+        }
+        let below = if i == 1 { 0.0 } else { 1.0 };
+        let pivot = 4.0 - below * c[i - 1];
+        c[i] = 1.0 / pivot;
+        r[i] = (rhs - below * r[i - 1]) / pivot;
+    }
+    p[0] = d[0];
+    p[n - 1] = d[n - 1];
+    p[n - 2] = r[n - 2];
+    for i in (1..n - 2).rev() {
+        p[i] = r[i] - c[i] * p[i + 1];
+    }
+}
+
+/// Whether the heights of `mid` rise strictly from `z0` to `z1` (the ends of `mid` may lie
+/// at those heights; strictly between them, the inner points).
+fn rising(z0: f64, z1: f64, mid: &[DVec2]) -> bool {
+    let n = mid.len() - 1;
+    let rises = |p: f64, q: f64| (q - p) * (z1 - z0) > 0.0;
+    mid.windows(2).all(|w| rises(w[0].y, w[1].y))
+        && (n < 2 || (rises(z0, mid[1].y) && rises(mid[n - 1].y, z1)))
 }
 
 /// Most Gauss-Seidel sweeps of [`winslow_smooth`].
@@ -763,8 +950,8 @@ fn check_unfolded(grid: &[Vec<DVec2>]) -> Result<()> {
 /// (`Role::Keep`); a pole sector's inner vertices off creases are faired (`Role::Fair`,
 /// see the module documentation); the rest interpolate their data points.
 ///
-/// `smoothing`: a meridian cap whose every Coons grid folds may be relaxed towards the
-/// Winslow grid (see the module documentation; callers try the unsmoothed layouts first).
+/// `layout`: how the meridian caps' grids are laid out ([`CapLayout`]; callers try
+/// [`CapLayout::Coons`], then [`CapLayout::Winslow`], then [`CapLayout::Rungs`]).
 ///
 /// Errors ([`Error::InvalidArgument`]): caps with fewer than 2 rings, ends at one height, or
 /// a folding meridian cap.
@@ -775,7 +962,7 @@ pub fn wedge_parts(
     grid: &SweepGrid,
     ring_s: &[f64],
     radial: &[Vec<f64>; 2],
-    smoothing: bool,
+    layout: CapLayout,
 ) -> Result<(MeshParts, Vec<DesignCoord>, Vec<Role>)> {
     let capped = settings.caps == Caps::Flat;
     let rows = grid.rings.len();
@@ -838,7 +1025,7 @@ pub fn wedge_parts(
         for (side, theta) in [(0, 0.0), (1, angle)] {
             let column: Vec<u32> = (0..rows).map(|i| ring_ids(i)[side * (cols - 1)]).collect();
             let (bottom, top) = (&sectors[0].radials[side], &sectors[1].radials[side]);
-            w.meridian_cap(theta, &column, bottom, top, smoothing, &mut shared)?;
+            w.meridian_cap(theta, &column, bottom, top, layout, &mut shared)?;
         }
     }
     let on_crease: HashSet<u32> = w.creased.iter().flat_map(|&(a, b)| [a, b]).collect();
@@ -884,6 +1071,78 @@ mod tests {
             }
         }
         assert!(check_unfolded(&grid).is_ok());
+    }
+
+    #[test]
+    fn crease_control_points_reproduce_their_limit_points() {
+        // Limit points of a crease chain under the cubic B-spline mask (1, 4, 1) / 6, the
+        // ends (corners) their own limits: solving for the control points gives them back.
+        let p: Vec<DVec2> = [
+            (0.0, 0.0),
+            (0.3, 1.0),
+            (1.5, 0.2),
+            (2.0, 2.5),
+            (2.2, 3.0),
+            (4.0, 3.1),
+        ]
+        .iter()
+        .map(|&(x, y)| DVec2::new(x, y))
+        .collect();
+        let n = p.len();
+        let d: Vec<DVec2> = (0..n)
+            .map(|i| {
+                if i == 0 || i == n - 1 {
+                    p[i]
+                } else {
+                    (p[i - 1] + 4.0 * p[i] + p[i + 1]) / 6.0
+                }
+            })
+            .collect();
+        let mut solved = d.clone();
+        solve_crease(&d, &mut solved);
+        for (a, b) in p.iter().zip(&solved) {
+            assert!((*a - *b).length() < 1e-14, "{a} {b}");
+        }
+    }
+
+    #[test]
+    #[allow(clippy::needless_range_loop)] // grid[i][j] against column[j]: two indices
+    fn rung_grids_are_linear_across_and_follow_the_rim_control_points() {
+        // A stem-like plane: a flat bottom radial line, a column rising at r = 0.1 to 0.3,
+        // a flat top; the rung grid's rows are evenly spaced straight lines from the axis
+        // at the column's control heights to its control points.
+        let line = |a: DVec2, b: DVec2, n: usize| -> Vec<DVec2> {
+            (0..=n)
+                .map(|i| a + (b - a) * (i as f64 / n as f64))
+                .collect()
+        };
+        let column: Vec<DVec2> = (0..=6)
+            .map(|j| DVec2::new(0.1 + 0.02 * (j * j) as f64 / 6.0, j as f64))
+            .collect();
+        let plane = MeridianPlane {
+            bottom: line(DVec2::ZERO, column[0], 4),
+            top: line(DVec2::new(0.0, 6.0), column[6], 4),
+            column,
+        };
+        let rim = plane.bottom.len() + plane.column.len() - 2 + plane.top.len();
+        let mut corners = vec![false; rim];
+        (corners[0], corners[rim - 1], corners[4], corners[10]) = (true, true, true, true);
+        let control = plane.control_points(&corners);
+        let (a, layout, grid) = control.choose(CapLayout::Rungs).unwrap();
+        assert_eq!((a, layout), (0, CapLayout::Rungs));
+        for j in 1..6 {
+            let c = control.column[j];
+            assert!((grid[0][j] - DVec2::new(0.0, c.y)).length() < 1e-14);
+            assert!((grid[4][j] - c).length() < 1e-14);
+            for i in 1..4 {
+                let t = i as f64 / 4.0;
+                assert!((grid[i][j] - DVec2::new(t * c.x, c.y)).length() < 1e-14);
+            }
+        }
+        // The corners keep their data points; between them the limit mask gives them back.
+        assert_eq!(control.column[0], plane.column[0]);
+        let d = (control.column[1] + 4.0 * control.column[2] + control.column[3]) / 6.0;
+        assert!((d - plane.column[2]).length() < 1e-14);
     }
 
     #[test]

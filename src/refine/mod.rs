@@ -12,6 +12,7 @@
 
 mod output;
 pub mod primvar;
+mod ranges;
 pub(crate) mod step;
 #[cfg(test)]
 mod tests;

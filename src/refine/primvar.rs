@@ -5,8 +5,7 @@
 
 use glam::DVec3;
 
-use std::sync::atomic::{AtomicBool, Ordering};
-
+use super::ranges::fill_pass;
 use super::step::{Refinement, VertexOrder};
 use crate::catmark::masks::{
     face_point_weight, EdgeMask, EdgeNeighbourhood, VertexMask, VertexMaskBuilder,
@@ -15,7 +14,6 @@ use crate::catmark::masks::{
 use crate::catmark::Rule;
 use crate::control::Control;
 use crate::error::Result;
-use crate::eval::parallel::fill_ranges;
 use crate::options::TriangleSubdivision;
 use crate::topology::Level;
 
@@ -268,33 +266,4 @@ pub(crate) fn interpolate_polled<T: Primvar>(
         },
     )?;
     Ok(dst)
-}
-
-/// `out[i] = point(scratch, i)` for every `i`, in contiguous ranges on `control`'s threads,
-/// each range with scratch space of its own. The first range (on the calling thread) reports
-/// to `control`; a cancel there stops the other ranges at their next point.
-///
-/// Errors: [`crate::Error::Cancelled`] from `control`.
-fn fill_pass<T: Send, S: Default>(
-    out: &mut [T],
-    control: &Control,
-    point: impl Fn(&mut S, usize) -> T + Sync,
-) -> Result<()> {
-    let cancelled = AtomicBool::new(false);
-    let ranges = fill_ranges(out, control.threads(), |range, part| {
-        let (first, len) = (range.start == 0, range.len());
-        let mut scratch = S::default();
-        for (k, (slot, i)) in part.iter_mut().zip(range).enumerate() {
-            if first {
-                control
-                    .step(k, len)
-                    .inspect_err(|_| cancelled.store(true, Ordering::Relaxed))?;
-            } else if cancelled.load(Ordering::Relaxed) {
-                break; // the first range's error is the one returned
-            }
-            *slot = point(&mut scratch, i);
-        }
-        Ok(())
-    });
-    ranges.into_iter().collect()
 }

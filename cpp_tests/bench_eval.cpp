@@ -4,7 +4,8 @@
 // (10,040 quads: extraordinary vertices, semi-sharp creases, boundaries), or the OBJs given as
 // arguments (each refined once, then merged). Built by cmake, not run by ctest:
 // `cmake --build build --target bench_eval && build/cpp_tests/bench_eval [--p2] [--build-only] [--memory] [mesh.obj...]`
-// (`--p2`: the refinement benchmark only; `--build-only`: one build and one position update on
+// (`--p2`: the refinement benchmark only; `--threads N`: profsubd's threads in P2, 0 for all
+// cores, the default; `--build-only`: one build and one position update on
 // each side, untimed, for callgrind; `--eval-only [--reps K]`: each side built once, then the
 // random points evaluated K times (1 by default: for callgrind), profsubd and Far alternated,
 // also with --scale; `--cpu-time`: time in the thread's processor time instead of wall-clock; `--memory`: the heap a built evaluator holds on each side), or `bench_eval --scale [--scale-min D] [--scale-max E]
@@ -78,6 +79,13 @@ double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock
 double thread_cpu() {
     timespec ts;
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+// The process's processor time, all threads, seconds.
+double process_cpu() {
+    timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
@@ -864,12 +872,15 @@ void scale(int min_exp, int max_exp, const std::string &only, int eval_reps) {
 int main(int argc, char **argv) {
     bool p2_only = false, build_only_mode = false, memory_only = false;
     int eval_reps = 0;
+    size_t p2_threads = 0;
     int scale_max = 0, scale_min = 3;
     std::string scale_only;
     std::vector<std::string> paths;
     for (int i = 1; i < argc; ++i) {
         if (std::string(argv[i]) == "--p2")
             p2_only = true;
+        else if (std::string(argv[i]) == "--threads" && i + 1 < argc)
+            p2_threads = std::strtoul(argv[++i], nullptr, 10);
         else if (std::string(argv[i]) == "--build-only")
             build_only_mode = true;
         else if (std::string(argv[i]) == "--memory")
@@ -957,16 +968,23 @@ int main(int argc, char **argv) {
         far_counts[0] = r->GetLevel(level).GetNumVertices();
         far_counts[1] = r->GetLevel(level).GetNumFaces();
     };
-    // Alternated runs, so that a change in the machine's load hits both sides alike.
-    double t_ref_ps = 1e300, t_ref_far = 1e300;
+    // Alternated runs, so that a change in the machine's load hits both sides alike; the
+    // process's processor time of profsubd's runs beside their wall time (all its threads).
+    profsubd_options_set_threads(opts, p2_threads);
+    double t_ref_ps = 1e300, t_ref_far = 1e300, cpu_ref_ps = 1e300;
     for (int rep = 0; rep < 7; ++rep) {
+        double cpu = process_cpu();
         t_ref_ps = std::min(t_ref_ps, best(1, run_ps));
+        cpu_ref_ps = std::min(cpu_ref_ps, process_cpu() - cpu);
         t_ref_far = std::min(t_ref_far, best(1, run_far));
     }
     double m_ps = peak_mib(run_ps);
+    profsubd_options_set_threads(opts, 0);
     double m_far = peak_mib(run_far);
     std::printf("\nP2: uniform refinement to level %d, topology + positions (best of 7, alternated)\n", level);
-    std::printf("  profsubd_refine_uniform:               %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_ps, m_ps);
+    std::printf("  profsubd_refine_uniform:               %8.1f ms   peak +%.1f MiB   (threads %zu, "
+                "0: all %u cores; processor %.1f ms)\n",
+                1e3 * t_ref_ps, m_ps, p2_threads, std::thread::hardware_concurrency(), 1e3 * cpu_ref_ps);
     std::printf("  Far TopologyRefiner + PrimvarRefiner:  %8.1f ms   peak +%.1f MiB\n", 1e3 * t_ref_far, m_far);
     std::printf("  level %d: profsubd %zu vertices, %zu faces; Far %d vertices, %d faces\n", level, ps_counts[0],
                 ps_counts[1], far_counts[0], far_counts[1]);

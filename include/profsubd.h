@@ -1461,13 +1461,14 @@ enum profsubd_status profsubd_options_set_crease_method(struct profsubd_options 
 /**
  * Set how many threads an evaluator built with these options (`profsubd_evaluator_new`)
  * uses for its build and its batches of points, and the constructions' fits (limit
- * stencils and solve) use: 0 (the default) for all cores, 1 for the calling thread only
+ * stencils and solve) and `profsubd_refine_uniform` use: 0 (the default) for all cores, 1 for the calling thread only
  * (`profsubd_evaluator_set_threads` changes an evaluator's afterwards). Results are bit for
  * bit the same for every setting.
  *
  * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` for a NULL `options`.
  */
-enum profsubd_status profsubd_options_set_threads(struct profsubd_options *options, size_t threads);
+enum profsubd_status profsubd_options_set_threads(struct profsubd_options *options,
+                                                  size_t threads);
 
 /**
  * Set the triangle rule: `PROFSUBD_TRIANGLES_CATMARK` or `PROFSUBD_TRIANGLES_SMOOTH`.
@@ -1556,7 +1557,9 @@ enum profsubd_status profsubd_options_set_vertex_order(struct profsubd_options *
  * the vertices, then of the faces, then of the edges (or faces, edges, vertices with
  * `PROFSUBD_ORDER_FACES_FIRST`); faces are the quads of each parent face in turn; positions
  * equal `PrimvarRefinerReal<double>::Interpolate`. It carries the decayed crease and corner
- * sharpness, the holes and the options used as tags.
+ * sharpness, the holes and the options used as tags. The positions are computed on the
+ * threads `profsubd_options_set_threads` sets (default all cores), bit for bit the same for
+ * any count.
  *
  * Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` (mesh or out NULL), `PROFSUBD_ERROR_INVALID_HANDLE`,
  * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a level above 8 or a refined mesh above 2^26 face

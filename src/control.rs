@@ -76,7 +76,8 @@ impl Control {
     }
 
     /// This control with `threads` threads for the work that splits (0: all cores, the
-    /// default): the fit's limit stencils and solve. Results are the same for every count.
+    /// default): the fit's limit stencils and solve, uniform refinement's positions. Results
+    /// are the same for every count.
     pub fn with_threads(self, threads: usize) -> Control {
         Control { threads, ..self }
     }

@@ -85,3 +85,39 @@ fn refine_rejects_bad_input() {
     let o = refine_to(Path::new("/nonexistent/mesh.obj"), "1", &out);
     assert_refused(&o, "/nonexistent/mesh.obj", &[&out], "a missing mesh");
 }
+
+/// `--threads N` splits the positions of each level over N threads (level 6 of the cube:
+/// 6144 parent faces, enough for 3 threads) and writes the same bytes as one thread and as
+/// the default (all cores), which equal the library's refinement.
+#[test]
+fn threads_flag_writes_the_same_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = cube();
+    let i = input.to_str().unwrap();
+    let run = |threads: Option<&str>| {
+        let out = dir
+            .path()
+            .join(format!("r{}.obj", threads.unwrap_or("default")));
+        let o = out.to_str().unwrap();
+        let mut args = vec!["refine", i, "--level", "6", "-o", o];
+        args.extend(threads.map(|t| ["--threads", t]).into_iter().flatten());
+        let r = profsubd(&args);
+        assert!(r.status.success(), "{threads:?}: {}", stderr(&r));
+        std::fs::read(&out).unwrap()
+    };
+    let one = run(Some("1"));
+    assert_eq!(run(Some("3")), one, "3 threads");
+    assert_eq!(run(None), one, "all cores");
+    let written = read_obj_file(&dir.path().join("r1.obj")).unwrap().mesh;
+    let base = read_obj_file(&input).unwrap().mesh;
+    let lib = refine_uniform(&base, &base.options().resolve(), 6).unwrap();
+    assert_eq!(written.num_faces(), 6 * 4usize.pow(6));
+    assert_eq!(written.positions(), lib.positions());
+    assert_eq!(written.face_indices(), lib.face_indices());
+    let out = dir.path().join("bad.obj");
+    let o = out.to_str().unwrap();
+    let bad = profsubd(&["refine", i, "--level", "1", "--threads=two", "-o", o]);
+    let err = stderr(&bad);
+    assert!(!bad.status.success() && err.contains("--threads"), "{err}");
+    assert!(!out.exists());
+}

@@ -217,11 +217,11 @@ impl SubdivFlags {
     }
 }
 
-/// `--threads`, for the commands that build an evaluator.
+/// `--threads`, for the commands that build an evaluator or refine.
 #[derive(Debug, Clone, Default, Args)]
 pub struct ThreadsFlag {
-    /// Threads for building the evaluator and evaluating batches of points, 0 for all
-    /// cores; results are the same for any count.
+    /// Threads for building the evaluator and evaluating batches of points, or for
+    /// refining, 0 for all cores; results are the same for any count.
     #[arg(long, value_name = "N", default_value_t = 0)]
     pub threads: usize,
 }

@@ -1,11 +1,12 @@
 //! `profsubd refine MESH.obj --level N -o OUT.obj`: uniform Catmull-Clark refinement in
-//! OpenSubdiv Far's vertex and face order, written with the decayed crease and corner tags.
+//! OpenSubdiv Far's vertex and face order, written with the decayed crease and corner tags;
+//! `--threads N` (default all cores) does not change the output.
 
 use std::path::PathBuf;
 
 use clap::Args;
 
-use super::{read_mesh, SubdivFlags};
+use super::{read_mesh, SubdivFlags, ThreadsFlag};
 use crate::error::Result;
 use crate::io::obj::write_obj_file;
 use crate::refine::{refine_uniform_with, VertexOrder};
@@ -29,6 +30,9 @@ pub struct RefineArgs {
     /// Subdivision options.
     #[command(flatten)]
     pub options: SubdivFlags,
+    /// Threads (0, the default: all cores).
+    #[command(flatten)]
+    pub threads: ThreadsFlag,
 }
 
 /// Run `refine`; returns exit code 0 on success.
@@ -40,7 +44,7 @@ pub fn run(args: &RefineArgs) -> Result<i32> {
     } else {
         VertexOrder::VerticesFirst
     };
-    let control = super::progress::control("refining");
+    let control = super::progress::control("refining").with_threads(args.threads.threads);
     let refined = refine_uniform_with(&mesh, &options, args.level, order, &control)?;
     super::progress::check_interrupted()?;
     write_obj_file(&refined, &args.output)?;

@@ -2,6 +2,7 @@
 //! of indices, one per thread, joined in order (scoped standard threads, no pool).
 
 use std::ops::Range;
+use std::sync::Mutex;
 
 /// Fewest items worth a thread: below this a batch runs on the calling thread.
 const MIN_ITEMS_PER_THREAD: usize = 1024;
@@ -23,14 +24,43 @@ pub(crate) fn map_ranges<T: Send>(
     threads: usize,
     f: impl Fn(Range<usize>) -> T + Sync,
 ) -> Vec<T> {
+    let ranges = ranges(n, threads);
+    on_threads(ranges.len(), |t| f(ranges[t].clone()))
+}
+
+/// The ranges [`map_ranges`] splits `0..n` into: one per thread, at least one.
+fn ranges(n: usize, threads: usize) -> Vec<Range<usize>> {
     let threads = resolve_threads(threads)
         .min(n / MIN_ITEMS_PER_THREAD)
         .max(1);
-    if threads == 1 {
-        return vec![f(0..n)];
-    }
     let chunk = n.div_ceil(threads);
-    on_threads(threads, |t| f(t * chunk..((t + 1) * chunk).min(n)))
+    (0..threads)
+        .map(|t| t * chunk..((t + 1) * chunk).min(n))
+        .collect()
+}
+
+/// [`map_ranges`] over the indices of `out`, `f` also given `out[range]` to fill: disjoint
+/// parts of one slice written on several threads.
+pub(crate) fn fill_ranges<T: Send, R: Send>(
+    out: &mut [T],
+    threads: usize,
+    f: impl Fn(Range<usize>, &mut [T]) -> R + Sync,
+) -> Vec<R> {
+    let ranges = ranges(out.len(), threads);
+    let mut rest = out;
+    // Each part behind a lock of its own, taken once by the thread of its range.
+    let parts: Vec<Mutex<Option<&mut [T]>>> = ranges
+        .iter()
+        .map(|r| {
+            let (part, tail) = std::mem::take(&mut rest).split_at_mut(r.len());
+            rest = tail;
+            Mutex::new(Some(part))
+        })
+        .collect();
+    on_threads(ranges.len(), |t| {
+        let part = parts[t].lock().ok().and_then(|mut p| p.take());
+        f(ranges[t].clone(), part.expect("each part is taken once"))
+    })
 }
 
 /// `f(t)` for every `t` in `0..threads`, in order, each on its own thread (at least one).
@@ -105,5 +135,18 @@ mod tests {
         }
         assert_eq!(try_map(0, 4, ok).unwrap(), Vec::<usize>::new());
         assert!(resolve_threads(0) >= 1 && resolve_threads(5) == 5);
+        let fill = |threads: usize| {
+            let mut out = vec![0usize; n];
+            let starts = fill_ranges(&mut out, threads, |range, part| {
+                for (x, i) in part.iter_mut().zip(range.clone()) {
+                    *x = i * 7 + 1;
+                }
+                range.start
+            });
+            (out, starts.len())
+        };
+        assert_eq!(fill(1), (one.clone(), 1));
+        assert_eq!(fill(3), (one.clone(), 3));
+        assert_eq!(fill(64).0, one);
     }
 }

@@ -200,7 +200,7 @@ pub unsafe extern "C" fn profsubd_options_set_crease_method(
 
 /// Set how many threads an evaluator built with these options (`profsubd_evaluator_new`)
 /// uses for its build and its batches of points, and the constructions' fits (limit
-/// stencils and solve) use: 0 (the default) for all cores, 1 for the calling thread only
+/// stencils and solve) and `profsubd_refine_uniform` use: 0 (the default) for all cores, 1 for the calling thread only
 /// (`profsubd_evaluator_set_threads` changes an evaluator's afterwards). Results are bit for
 /// bit the same for every setting.
 ///

@@ -51,7 +51,9 @@ pub unsafe extern "C" fn profsubd_options_set_vertex_order(
 /// the vertices, then of the faces, then of the edges (or faces, edges, vertices with
 /// `PROFSUBD_ORDER_FACES_FIRST`); faces are the quads of each parent face in turn; positions
 /// equal `PrimvarRefinerReal<double>::Interpolate`. It carries the decayed crease and corner
-/// sharpness, the holes and the options used as tags.
+/// sharpness, the holes and the options used as tags. The positions are computed on the
+/// threads `profsubd_options_set_threads` sets (default all cores), bit for bit the same for
+/// any count.
 ///
 /// Errors: `PROFSUBD_ERROR_NULL_ARGUMENT` (mesh or out NULL), `PROFSUBD_ERROR_INVALID_HANDLE`,
 /// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a level above 8 or a refined mesh above 2^26 face

@@ -12,6 +12,7 @@
 
 mod output;
 pub mod primvar;
+mod ranges;
 pub(crate) mod step;
 #[cfg(test)]
 mod tests;
@@ -38,7 +39,8 @@ pub const MAX_LEVEL: u32 = 8;
 pub const MAX_REFINED_FACE_INDICES: usize = 1 << 26;
 
 /// Refine `mesh` uniformly `level` times under `options`, child vertices in Far's default
-/// order (children of vertices, then of faces, then of edges).
+/// order (children of vertices, then of faces, then of edges), on all cores (the result does
+/// not depend on the thread count: [`refine_uniform_with`]).
 ///
 /// Level 0 returns the mesh with the options attached. Errors: [`Error::InvalidArgument`]
 /// if `level` exceeds [`MAX_LEVEL`] or the refined mesh would exceed
@@ -60,7 +62,9 @@ pub fn refine_uniform_ordered(
 /// [`refine_uniform_ordered`] with progress, cancellation and a memory budget: `control` is
 /// polled through each level's topology and positions (every thousandth face, edge or
 /// vertex of each pass; the work of level `k` counted as `4^k`), and the refinement refused
-/// before allocating when [`refined_bytes`] is above the budget.
+/// before allocating when [`refined_bytes`] is above the budget. Each level's positions are
+/// computed on `control`'s threads ([`Control::threads`], 0: all cores), the same bit for bit
+/// for every count; its topology on the calling thread.
 ///
 /// Errors: those of [`refine_uniform`]; [`Error::Cancelled`] and [`Error::LimitExceeded`]
 /// from `control`.

@@ -5,7 +5,8 @@
 
 use glam::DVec3;
 
-use super::step::Refinement;
+use super::ranges::fill_pass;
+use super::step::{Refinement, VertexOrder};
 use crate::catmark::masks::{
     face_point_weight, EdgeMask, EdgeNeighbourhood, VertexMask, VertexMaskBuilder,
     VertexNeighbourhood,
@@ -18,7 +19,7 @@ use crate::topology::Level;
 
 /// Vertex data that can be refined: a value that starts at zero and accumulates weighted
 /// copies of other values (`Clear` and `AddWithWeight` in OpenSubdiv).
-pub trait Primvar: Sized {
+pub trait Primvar: Sized + Send + Sync {
     /// The zero value.
     fn zero() -> Self;
     /// `self += weight * src`.
@@ -96,16 +97,21 @@ impl Primvar for SparseStencil {
     }
 }
 
-/// Values of the child vertices of `r` from the values `src` of the parent level's vertices.
+/// Values of the child vertices of `r` from the values `src` of the parent level's vertices,
+/// on the calling thread (the evaluators call this within their own threads).
 ///
 /// Panics if `src` has fewer values than `parent` has vertices.
 pub fn interpolate<T: Primvar>(parent: &Level, r: &Refinement, src: &[T]) -> Vec<T> {
-    interpolate_polled(parent, r, src, &Control::NONE)
+    interpolate_polled(parent, r, src, &Control::NONE.with_threads(1))
         .expect("a control without a hook never cancels")
 }
 
-/// [`interpolate`] reporting to `control` through its passes over the parent's faces, edges
-/// and vertices (one step each): the same values bit for bit.
+/// [`interpolate`] on `control`'s threads ([`Control::threads`], 0: all cores), reporting to
+/// `control` through its passes over the parent's faces, edges and vertices: the same values
+/// bit for bit whatever the thread count. Each pass fills contiguous ranges of its child
+/// vertices, one per thread, each point the same weighted sum in the same order as on one
+/// thread; the first range reports (its fraction stands for the pass) and a cancel there
+/// stops the others at their next point.
 ///
 /// Errors: [`crate::Error::Cancelled`] from `control`.
 pub(crate) fn interpolate_polled<T: Primvar>(
@@ -115,8 +121,12 @@ pub(crate) fn interpolate_polled<T: Primvar>(
     control: &Control,
 ) -> Result<Vec<T>> {
     assert!(src.len() >= parent.num_vertices());
-    let (nf, ne) = (parent.num_faces(), parent.num_edges());
-    let steps = nf + ne + parent.num_vertices();
+    let (nv, nf, ne) = (
+        parent.num_vertices(),
+        parent.num_faces(),
+        parent.num_edges(),
+    );
+    let steps = (nf + ne + nv) as f64;
     let child = &r.child;
     // Filled in chunks, each polled: on a large level the first touch of its pages is a
     // wait of its own.
@@ -126,10 +136,24 @@ pub(crate) fn interpolate_polled<T: Primvar>(
         control.report(0.0)?;
         dst.extend((start..nc.min(start + (1 << 16))).map(|_| T::zero()));
     }
+    // The children of the parent's vertices, faces and edges: three runs of `dst`.
+    let (vertex_points, face_points, edge_points) = match r.order() {
+        VertexOrder::VerticesFirst => {
+            let (v, rest) = dst.split_at_mut(nv);
+            let (f, e) = rest.split_at_mut(nf);
+            (v, f, e)
+        }
+        VertexOrder::FacesFirst => {
+            let (f, rest) = dst.split_at_mut(nf);
+            let (e, v) = rest.split_at_mut(ne);
+            (v, f, e)
+        }
+    };
+    let pass =
+        |done: usize, n: usize| control.stage(done as f64 / steps, (done + n) as f64 / steps);
     let options = parent.options();
 
-    for f in 0..nf {
-        control.step(f, steps)?;
+    fill_pass(face_points, &pass(0, nf), |_: &mut (), f| {
         let fv = parent.face_vertices(f);
         let w = face_point_weight(fv.len());
         let mut acc = T::zero();
@@ -137,26 +161,24 @@ pub(crate) fn interpolate_polled<T: Primvar>(
             acc.add_weighted(&src[v as usize], w);
         }
         acc.finish(r.face_child_vertex(f));
-        dst[r.face_child_vertex(f) as usize] = acc;
-    }
+        acc
+    })?;
+    let face_points = &*face_points;
 
-    let mut emask = EdgeMask::default();
     let smooth_triangles = options.triangles == TriangleSubdivision::Smooth;
-    for e in 0..ne {
-        control.step(nf + e, steps)?;
+    fill_pass(edge_points, &pass(nf, ne), |emask: &mut EdgeMask, e| {
         let ev = parent.edge_vertices(e);
         let ef = parent.edge_faces(e);
-        let cv = r.edge_child_vertex(e) as usize;
+        let cv = r.edge_child_vertex(e);
         if parent.edge_sharpness(e) <= 0.0 && ef.len() == 2 && !smooth_triangles {
             // The common case, the plain smooth mask, without building it.
             let mut acc = T::zero();
             acc.add_weighted(&src[ev[0] as usize], 0.25);
             acc.add_weighted(&src[ev[1] as usize], 0.25);
-            acc.add_weighted(&dst[r.face_child_vertex(ef[0] as usize) as usize], 0.25);
-            acc.add_weighted(&dst[r.face_child_vertex(ef[1] as usize) as usize], 0.25);
-            acc.finish(cv as u32);
-            dst[cv] = acc;
-            continue;
+            acc.add_weighted(&face_points[ef[0] as usize], 0.25);
+            acc.add_weighted(&face_points[ef[1] as usize], 0.25);
+            acc.finish(cv);
+            return acc;
         }
         let mut tri = [false; 2];
         if ef.len() == 2 {
@@ -171,7 +193,7 @@ pub(crate) fn interpolate_polled<T: Primvar>(
         };
         emask.compute(
             &hood,
-            Some(child.vertex_rule(cv)),
+            Some(child.vertex_rule(cv as usize)),
             options.crease_method,
             options.triangles,
         );
@@ -179,68 +201,69 @@ pub(crate) fn interpolate_polled<T: Primvar>(
         acc.add_weighted(&src[ev[0] as usize], emask.vertices[0]);
         acc.add_weighted(&src[ev[1] as usize], emask.vertices[1]);
         for (&f, &w) in ef.iter().zip(&emask.faces) {
-            acc.add_weighted(&dst[r.face_child_vertex(f as usize) as usize], w);
+            acc.add_weighted(&face_points[f as usize], w);
         }
-        acc.finish(cv as u32);
-        dst[cv] = acc;
-    }
+        acc.finish(cv);
+        acc
+    })?;
 
-    let mut builder = VertexMaskBuilder::default();
-    let mut vmask = VertexMask::default();
-    let mut edge_sharpness: Vec<f32> = Vec::new();
-    for v in 0..parent.num_vertices() {
-        control.step(nf + ne + v, steps)?;
-        let cv = r.vertex_child_vertex(v) as usize;
-        let ve = parent.vertex_edges(v);
-        let vf = parent.vertex_faces(v);
-        let p_rule = parent.vertex_rule(v);
-        if p_rule == Rule::Smooth {
-            // The common case, the smooth mask (a smooth vertex stays smooth), inline.
-            let n = vf.len();
-            let w = 1.0 / (n * n) as f64;
-            let mut acc = T::zero();
-            for &f in vf {
-                acc.add_weighted(&dst[r.face_child_vertex(f as usize) as usize], w);
+    type VertexScratch = (VertexMaskBuilder, VertexMask, Vec<f32>);
+    fill_pass(
+        vertex_points,
+        &pass(nf + ne, nv),
+        |scratch: &mut VertexScratch, v| {
+            let (builder, vmask, edge_sharpness) = scratch;
+            let cv = r.vertex_child_vertex(v);
+            let ve = parent.vertex_edges(v);
+            let vf = parent.vertex_faces(v);
+            let p_rule = parent.vertex_rule(v);
+            if p_rule == Rule::Smooth {
+                // The common case, the smooth mask (a smooth vertex stays smooth), inline.
+                let n = vf.len();
+                let w = 1.0 / (n * n) as f64;
+                let mut acc = T::zero();
+                for &f in vf {
+                    acc.add_weighted(&face_points[f as usize], w);
+                }
+                for &e in ve {
+                    let [a, b] = parent.edge_vertices(e as usize);
+                    let across = if a as usize == v { b } else { a };
+                    acc.add_weighted(&src[across as usize], w);
+                }
+                acc.add_weighted(&src[v], (n as f64 - 2.0) / n as f64);
+                acc.finish(cv);
+                return acc;
             }
-            for &e in ve {
+            edge_sharpness.clear();
+            if !matches!(p_rule, Rule::Smooth | Rule::Dart) {
+                edge_sharpness.extend(ve.iter().map(|&e| parent.edge_sharpness(e as usize)));
+            }
+            let hood = VertexNeighbourhood {
+                num_faces: vf.len(),
+                sharpness: parent.vertex_sharpness(v),
+                child_sharpness: child.vertex_sharpness(cv as usize),
+                edge_sharpness,
+            };
+            builder.compute(
+                &hood,
+                p_rule,
+                child.vertex_rule(cv as usize),
+                options.crease_method,
+                vmask,
+            );
+            let mut acc = T::zero();
+            for (&f, &w) in vf.iter().zip(&vmask.faces) {
+                acc.add_weighted(&face_points[f as usize], w);
+            }
+            for (&e, &w) in ve.iter().zip(&vmask.edges) {
                 let [a, b] = parent.edge_vertices(e as usize);
                 let across = if a as usize == v { b } else { a };
                 acc.add_weighted(&src[across as usize], w);
             }
-            acc.add_weighted(&src[v], (n as f64 - 2.0) / n as f64);
-            acc.finish(cv as u32);
-            dst[cv] = acc;
-            continue;
-        }
-        edge_sharpness.clear();
-        if !matches!(p_rule, Rule::Smooth | Rule::Dart) {
-            edge_sharpness.extend(ve.iter().map(|&e| parent.edge_sharpness(e as usize)));
-        }
-        let hood = VertexNeighbourhood {
-            num_faces: vf.len(),
-            sharpness: parent.vertex_sharpness(v),
-            child_sharpness: child.vertex_sharpness(cv),
-            edge_sharpness: &edge_sharpness,
-        };
-        builder.compute(
-            &hood,
-            p_rule,
-            child.vertex_rule(cv),
-            options.crease_method,
-            &mut vmask,
-        );
-        let mut acc = T::zero();
-        for (&f, &w) in vf.iter().zip(&vmask.faces) {
-            acc.add_weighted(&dst[r.face_child_vertex(f as usize) as usize], w);
-        }
-        for (&e, &w) in ve.iter().zip(&vmask.edges) {
-            let [a, b] = parent.edge_vertices(e as usize);
-            let across = if a as usize == v { b } else { a };
-            acc.add_weighted(&src[across as usize], w);
-        }
-        acc.add_weighted(&src[v], vmask.vertex);
-        acc.finish(cv as u32);
-        dst[cv] = acc;
-    }
+            acc.add_weighted(&src[v], vmask.vertex);
+            acc.finish(cv);
+            acc
+        },
+    )?;
     Ok(dst)
 }

@@ -14,6 +14,7 @@
 //! later levels sum their weights.
 
 use super::super::topology::Level;
+use super::ranges::fill_pass;
 use crate::catmark::crease::{
     is_infinite, is_semi_sharp, is_sharp, subdivide_edge_sharpness_at_vertex,
     subdivide_vertex_sharpness, vertex_rule, SHARPNESS_INFINITE,
@@ -121,9 +122,15 @@ impl Rows {
     }
 }
 
-/// Refine `parent` once (uniformly), with child vertices in `order`.
+/// Refine `parent` once (uniformly), with child vertices in `order`, on the calling thread
+/// (the evaluators call this within their own threads).
 pub fn refine(parent: &Level, order: VertexOrder) -> Refinement {
-    refine_polled(parent, order, true, &Control::NONE).expect(NEVER_CANCELLED)
+    refine_polled(parent, order, true, &one_thread()).expect(NEVER_CANCELLED)
+}
+
+/// A control without hook, on the calling thread only.
+fn one_thread() -> Control {
+    Control::NONE.with_threads(1)
 }
 
 /// What a refinement without a progress hook cannot fail with.
@@ -133,11 +140,12 @@ const NEVER_CANCELLED: &str = "a control without a hook never cancels";
 /// topology" for the last level): enough to interpolate into the child and to write its
 /// faces out, not to query its edges' or vertices' neighbourhoods or refine it further.
 pub(crate) fn refine_last(parent: &Level, order: VertexOrder) -> Refinement {
-    refine_polled(parent, order, false, &Control::NONE).expect(NEVER_CANCELLED)
+    refine_polled(parent, order, false, &one_thread()).expect(NEVER_CANCELLED)
 }
 
 /// [`refine`] (`full`) or [`refine_last`] reporting to `control` through each pass over the
-/// parent's faces and edges.
+/// parent's faces and edges, the child faces on `control`'s threads (the rest on the calling
+/// thread).
 ///
 /// Errors: [`crate::Error::Cancelled`] from `control`.
 pub(crate) fn refine_polled(
@@ -237,7 +245,8 @@ fn child_rules(parent: &Level, r: &Refinement) -> Vec<Rule> {
 type FaceArrays = (Vec<u32>, Vec<u32>, Vec<u32>, Vec<bool>);
 
 /// Child face-vertices and face-edges (`populateFaceVerticesFromParentFaces`,
-/// `populateFaceEdgesFromParentFaces`) and hole tags.
+/// `populateFaceEdgesFromParentFaces`) and hole tags. The child faces are filled in
+/// contiguous ranges on `control`'s threads, each from its parent face alone.
 fn build_faces(
     parent: &Level,
     r: &Refinement,
@@ -246,60 +255,82 @@ fn build_faces(
 ) -> Result<FaceArrays> {
     let nfv = parent.num_face_vertices_total();
     let offsets: Vec<u32> = (0..=nfv as u32).map(|i| 4 * i).collect();
-    let mut verts = vec![0u32; 4 * nfv];
-    let mut edges = vec![0u32; if with_edges { 4 * nfv } else { 0 }];
-    let mut holes = vec![false; nfv];
     let (first_v, first_f, first_e) = (
         r.vertex_child_vertex(0),
         r.face_child_vertex(0),
         r.edge_child_vertex(0),
     );
-    let nf = parent.num_faces();
-    for f in 0..nf {
-        control.step(f, nf)?;
+    let share = if with_edges { 0.5 } else { 1.0 };
+    // Order within the child quad: for a parent quad, rotated so that the corner vertex
+    // keeps its position j (slot k holds (j + k) mod 4); otherwise corner first.
+    let rotation = |n: usize, j: usize| if n == 4 { j } else { 0 };
+    let mut verts = vec![[0u32; 4]; nfv];
+    fill_pass(&mut verts, &control.stage(0.0, share), |cursor, c| {
+        let (f, j) = parent_face(parent, cursor, c);
         let fv = parent.face_vertices(f);
         let fe = parent.face_edges(f);
         let n = fv.len();
-        let base = parent.face_offset(f);
+        let j_prev = if j > 0 { j - 1 } else { n - 1 };
+        let rot = rotation(n, j);
+        let mut quad = [0u32; 4];
+        quad[rot] = first_v + fv[j];
+        quad[(rot + 1) & 3] = first_e + fe[j];
+        quad[(rot + 2) & 3] = first_f + f as u32;
+        quad[(rot + 3) & 3] = first_e + fe[j_prev];
+        quad
+    })?;
+    let mut edges = vec![[0u32; 4]; if with_edges { nfv } else { 0 }];
+    fill_pass(&mut edges, &control.stage(share, 1.0), |cursor, c| {
+        let (f, j) = parent_face(parent, cursor, c);
+        let fv = parent.face_vertices(f);
+        let fe = parent.face_edges(f);
+        let n = fv.len();
+        let j_prev = if j > 0 { j - 1 } else { n - 1 };
+        let corner = fv[j];
+        let prev = parent.edge_vertices(fe[j_prev] as usize);
+        let next = parent.edge_vertices(fe[j] as usize);
+        let corner_in_prev = if prev[0] != prev[1] {
+            (prev[0] != corner) as usize
+        } else {
+            1
+        };
+        let corner_in_next = if next[0] != next[1] {
+            (next[0] != corner) as usize
+        } else {
+            0
+        };
+        let rot = rotation(n, j);
+        let mut quad = [0u32; 4];
+        quad[rot] = r.edge_child_edge(fe[j] as usize, corner_in_next);
+        quad[(rot + 1) & 3] = c as u32;
+        quad[(rot + 2) & 3] = (c - j + j_prev) as u32;
+        quad[(rot + 3) & 3] = r.edge_child_edge(fe[j_prev] as usize, corner_in_prev);
+        quad
+    })?;
+    let mut holes = vec![false; nfv];
+    for f in 0..parent.num_faces() {
         if parent.is_face_hole(f) {
-            holes[base..base + n].fill(true);
-        }
-        let face_point = first_f + f as u32;
-        let children = &mut verts[4 * base..4 * (base + n)];
-        for (j, quad) in children.chunks_exact_mut(4).enumerate() {
-            let j_prev = if j > 0 { j - 1 } else { n - 1 };
-            // Order within the child quad: for a parent quad, rotated so that the corner
-            // vertex keeps its position j (slot k holds (j + k) mod 4); otherwise corner
-            // first.
-            let rot = if n == 4 { j } else { 0 };
-            quad[rot] = first_v + fv[j];
-            quad[(rot + 1) & 3] = first_e + fe[j];
-            quad[(rot + 2) & 3] = face_point;
-            quad[(rot + 3) & 3] = first_e + fe[j_prev];
-            if !with_edges {
-                continue;
-            }
-            let corner = fv[j];
-            let prev = parent.edge_vertices(fe[j_prev] as usize);
-            let next = parent.edge_vertices(fe[j] as usize);
-            let corner_in_prev = if prev[0] != prev[1] {
-                (prev[0] != corner) as usize
-            } else {
-                1
-            };
-            let corner_in_next = if next[0] != next[1] {
-                (next[0] != corner) as usize
-            } else {
-                0
-            };
-            let c = 4 * (base + j);
-            edges[c + rot] = r.edge_child_edge(fe[j] as usize, corner_in_next);
-            edges[c + ((rot + 1) & 3)] = (base + j) as u32;
-            edges[c + ((rot + 2) & 3)] = (base + j_prev) as u32;
-            edges[c + ((rot + 3) & 3)] = r.edge_child_edge(fe[j_prev] as usize, corner_in_prev);
+            let base = parent.face_offset(f);
+            holes[base..base + parent.face_vertices(f).len()].fill(true);
         }
     }
-    Ok((offsets, verts, edges, holes))
+    Ok((
+        offsets,
+        verts.into_flattened(),
+        edges.into_flattened(),
+        holes,
+    ))
+}
+
+/// The parent face of child face `c` and the corner it holds, through `cursor`: the parent
+/// face of the range's previous child face (none yet at the range's start).
+fn parent_face(parent: &Level, cursor: &mut Option<usize>, c: usize) -> (usize, usize) {
+    let offsets = &parent.face_offsets;
+    let f = cursor.get_or_insert_with(|| offsets.partition_point(|&o| o as usize <= c) - 1);
+    while offsets[*f + 1] as usize <= c {
+        *f += 1;
+    }
+    (*f, c - offsets[*f] as usize)
 }
 
 /// Child edge sharpness (`subdivideEdgeSharpness`) and non-manifold tags.

@@ -1669,7 +1669,8 @@ enum profsubd_status profsubd_sweep(const double *profile,
 /**
  * Tessellate uniformly: `rate` x `rate` cells per quad, `ceil(rate / 2)` per sub-face of
  * an N-gon (1 <= rate <= 4096). `quads` non-zero keeps grid cells as quads. Errors:
- * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a rate out of range.
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a rate out of range or more than 2^24 cells in all
+ * (checked before building).
  */
 enum profsubd_status profsubd_tessellation_new_uniform(const struct profsubd_evaluator *evaluator,
                                                        uint32_t rate,
@@ -1680,8 +1681,8 @@ enum profsubd_status profsubd_tessellation_new_uniform(const struct profsubd_eva
  * Tessellate adaptively: no triangle farther than `tolerance` (model units, > 0) from the
  * limit surface at its check points, rates up to `max_rate` (1..=4096; faces that reach it
  * and still miss are counted by `profsubd_tessellation_num_unmet`). Errors:
- * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a tolerance that is not positive and finite, or a
- * `max_rate` out of range.
+ * `PROFSUBD_ERROR_INVALID_ARGUMENT` for a tolerance that is not positive and finite, a
+ * `max_rate` out of range, or rates that would make more than 2^24 cells in all.
  */
 enum profsubd_status profsubd_tessellation_new_adaptive(const struct profsubd_evaluator *evaluator,
                                                         double tolerance,

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Same bytes on every CPU: runs the release CLI on every bundled example natively and under
+# Same bytes on every CPU: runs the release CLI on every bundled example (profiles, sweeps,
+# sketch curves, blends) natively and under
 # QEMU user-mode emulation of CPUs with fewer SIMD features (qemu64: SSE2 only, no AVX, no FMA;
 # Haswell: AVX2 + FMA, no AVX-512), so every runtime-dispatched kernel (ours, the C library's
 # libm variants, any dependency's) takes a different path; each output must equal the
@@ -18,16 +19,20 @@ if [ "$(uname -m)" = x86_64 ] && command -v qemu-x86_64 >/dev/null; then
 else
     echo "qemu-x86_64 not available: native run only" >&2
 fi
+# Every bundled example, as tests/example_bytes.rs runs them natively.
+examples=(examples/profiles/*.json examples/sweeps/*.json examples/curves/*.json examples/blends/*.json)
 out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 failed=0
 for runner in "${runners[@]}"; do
     prefix=()
     [ "$runner" = native ] || read -r -a prefix <<<"$runner"
-    for json in examples/profiles/*.json examples/sweeps/*.json; do
+    for json in "${examples[@]}"; do
         base="${json%.json}"
         case "$json" in
             examples/profiles/*) cmd=profile ;;
+            examples/curves/*) cmd=curves ;;
+            examples/blends/*) cmd=blend ;;
             *) if grep -q '"trajectory"' "$json"; then cmd=sweep; else cmd=revolve; fi ;;
         esac
         # (QEMU warns about host-only CPUID bits it does not emulate: noise.)
@@ -40,7 +45,7 @@ for runner in "${runners[@]}"; do
             fi
         done
     done
-    echo "$runner: $(ls examples/profiles/*.json examples/sweeps/*.json | wc -l) examples compared"
+    echo "$runner: ${#examples[@]} examples compared"
 done
 [ "$failed" -eq 0 ] && echo "determinism: every example byte-identical under: ${runners[*]}"
 exit "$failed"

@@ -176,7 +176,10 @@ fn layout_and_fold_check_are_polled() {
 /// last level's topology of a level-3 refinement (strictly between the end of level 2 and the
 /// middle of level 3: `(4^3 - 4) / 252` and `(60 + 252) / 504`). A cancel at the first report
 /// inside either stops the call with that fraction; uncancelled, the polls change nothing
-/// (the same evaluator and refined mesh, bit for bit, as without a hook).
+/// (the same evaluator and refined mesh, bit for bit, as without a hook). The same for the
+/// base level that a construction's fit builds its limit stencils on (a revolution's fit
+/// fills 10–100 % of the call, its stencils 0–29 % of the fit, their base level 0–10 % of
+/// those: strictly between 0.1 and 0.1 + 0.9 × 0.029).
 #[test]
 fn position_pass_and_refined_topology_are_polled() {
     let mesh = read_obj_file(Path::new(&example("examples/profiles/vase.obj")))
@@ -184,8 +187,26 @@ fn position_pass_and_refined_topology_are_polled() {
         .mesh;
     let options: SubdivOptions = mesh.options().resolve();
     let (lo, hi) = (60.0 / 252.0, (60.0 + 252.0) / 504.0);
-    let cases: [(&str, (f64, f64), Work); 2] = [
-        ("evaluator", (0.95, 1.0), {
+    let level_end = 0.1 + 0.9 * 0.29 * 0.1;
+    // (name, fractions inside the polled step, fewest reports there, work)
+    let cases: [(&str, (f64, f64), usize, Work); 3] = [
+        // Its faces and vertices passes report up to a thousand times each (1346 here); an
+        // unpolled base level would leave only the stencils' vertex loop, whose thousand
+        // reports spread over 0.1–0.361 put 67 in this window.
+        ("fit's base level", (0.1 + 1e-9, level_end - 1e-9), 500, {
+            let mut input = RevolveInput::new(vec![[0.0, 0.0], [1.0, 0.0], [1.3, 2.0], [0.0, 3.0]]);
+            (input.samples_profile, input.samples_around) = (32, 64);
+            let plain = revolve::build(&input, &Settings::default()).unwrap().mesh;
+            Box::new(move |c: &Control| {
+                let settings = Settings {
+                    control: c.clone(),
+                    ..Settings::default()
+                };
+                assert_eq!(revolve::build(&input, &settings)?.mesh, plain);
+                Ok(())
+            })
+        }),
+        ("evaluator", (0.95, 1.0), 2, {
             // A revolution through the axis: its poles' rings of refined fragments make
             // enough points for several polls (one per 1024 points).
             let mut input = RevolveInput::new(vec![[0.0, 0.0], [1.0, 0.0], [1.3, 2.0], [0.0, 3.0]]);
@@ -199,7 +220,7 @@ fn position_pass_and_refined_topology_are_polled() {
                 Ok(())
             })
         }),
-        ("refine", (lo, hi), {
+        ("refine", (lo, hi), 2, {
             let mesh = mesh.clone();
             let order = VertexOrder::VerticesFirst;
             let plain = refine_uniform_with(&mesh, &options, 3, order, &Control::NONE).unwrap();
@@ -209,13 +230,17 @@ fn position_pass_and_refined_topology_are_polled() {
             })
         }),
     ];
-    for (name, (from, to), work) in cases {
+    for (name, (from, to), least, work) in cases {
         let (control, seen) = recording(f64::INFINITY);
         work(&control).unwrap();
         let inside: Vec<f64> = (seen.lock().unwrap().iter().copied())
             .filter(|&f| from < f && f < to)
             .collect();
-        assert!(inside.len() >= 2, "{name}: {inside:?}");
+        assert!(
+            inside.len() >= least,
+            "{name}: {} reports inside",
+            inside.len()
+        );
         let (control, seen) = recording(inside[0]);
         match work(&control) {
             Err(Error::Cancelled(m)) => {

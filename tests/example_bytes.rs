@@ -73,6 +73,6 @@ fn examples_are_written_byte_for_byte_as_committed() {
             }
         }
     }
-    // 4 profiles, 5 sweeps, 3 sketch-curve patches and 10 blends, two files each.
+    // 4 profiles, 5 sweeps, 4 sketch-curve patches and 10 blends, two files each.
     assert_eq!(checked, 46);
 }

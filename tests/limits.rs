@@ -6,13 +6,16 @@
 use std::ptr;
 
 use profsubd::ffi::error::last_error;
+use profsubd::ffi::evaluator::{profsubd_evaluator_free, profsubd_evaluator_new};
 use profsubd::ffi::mesh::{profsubd_mesh, profsubd_mesh_desc, profsubd_mesh_new};
 use profsubd::ffi::mesh_io::profsubd_mesh_read_obj;
 use profsubd::ffi::refine::profsubd_refine_uniform;
 use profsubd::ffi::status::profsubd_status::*;
+use profsubd::ffi::tessellate::profsubd_tessellation_new_uniform;
 use profsubd::io::obj::{read_obj_file, MAX_OBJ_BYTES};
 use profsubd::refine::{refine_uniform, MAX_LEVEL, MAX_REFINED_FACE_INDICES};
-use profsubd::{Error, Mesh, MeshParts, SubdivOptions};
+use profsubd::tessellate::{tessellate, Rate, TessellateOptions, MAX_CELLS, MAX_RATE};
+use profsubd::{Error, Evaluator, Mesh, MeshParts, SubdivOptions};
 
 /// An `n` x `n` grid of quads.
 fn grid(n: u32) -> Mesh {
@@ -65,6 +68,40 @@ fn refinement_above_its_ceilings_is_refused_before_allocating() {
     assert_eq!(s, PROFSUBD_ERROR_INVALID_ARGUMENT);
     assert!(out.is_null() && !last_error().is_empty());
     unsafe { profsubd::ffi::mesh::profsubd_mesh_free(handle) };
+}
+
+/// A tessellation whose rates add up to more than `MAX_CELLS` cells: refused before building
+/// (four quads at the largest rate would be 2^26 cells, gigabytes), through Rust and C.
+#[test]
+fn a_tessellation_above_its_cell_ceiling_is_refused_before_building() {
+    let mesh = grid(2);
+    let ev = Evaluator::new(&mesh, &SubdivOptions::default()).unwrap();
+    const { assert!(4 * (MAX_RATE as u64).pow(2) > MAX_CELLS) };
+    let options = TessellateOptions {
+        rate: Rate::Uniform(MAX_RATE),
+        ..TessellateOptions::default()
+    };
+    let t0 = std::time::Instant::now();
+    match tessellate(&ev, &options) {
+        Err(Error::InvalidArgument(m)) => assert!(m.contains("cells"), "{m}"),
+        other => panic!("{:?}", other.map(|t| t.num_vertices())),
+    }
+    println!("4 quads at rate {MAX_RATE}: refused in {:?}", t0.elapsed());
+    // The same request through C: a status, a message, and no output.
+    let m = profsubd::ffi::mesh::new_mesh_handle(mesh);
+    let mut handle = ptr::null_mut();
+    assert_eq!(
+        unsafe { profsubd_evaluator_new(m, ptr::null(), &mut handle) },
+        PROFSUBD_OK
+    );
+    let mut out = ptr::null_mut();
+    let s = unsafe { profsubd_tessellation_new_uniform(handle, MAX_RATE, 0, &mut out) };
+    assert_eq!(s, PROFSUBD_ERROR_INVALID_ARGUMENT);
+    assert!(out.is_null() && last_error().contains("cells"));
+    unsafe {
+        profsubd_evaluator_free(handle);
+        profsubd::ffi::mesh::profsubd_mesh_free(m);
+    }
 }
 
 #[test]

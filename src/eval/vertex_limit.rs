@@ -71,7 +71,7 @@ pub fn limit_stencils(mesh: &Mesh, options: &SubdivOptions) -> Result<StencilTab
 }
 
 /// [`limit_stencils`] on `control`'s threads ([`Control::threads`], 0: all cores), reporting
-/// to `control` each vertex (the fit's first stage). Contiguous ranges of vertices, one per thread, are joined
+/// to `control` through the base level's build (0–10 %), then each vertex (the fit's first stage). Contiguous ranges of vertices, one per thread, are joined
 /// in vertex order: the table is the one-thread table bit for bit. The first range reports
 /// (its fraction stands for the whole: the ranges are equal); a cancel there stops the
 /// others at their next vertex.
@@ -80,8 +80,10 @@ pub(crate) fn limit_stencils_with(
     options: &SubdivOptions,
     control: &Control,
 ) -> Result<StencilTable> {
-    let level = Level::from_mesh_with_options(mesh, options);
+    // The base level of a large mesh takes tens of milliseconds: polled (0–10 %).
+    let level = Level::from_mesh_polled(mesh, options, &control.stage(0.0, 0.1))?;
     let surface = vertices_with_surface_in(&level);
+    let control = &control.stage(0.1, 1.0);
     let cancelled = AtomicBool::new(false);
     let parts = super::parallel::map_ranges(mesh.num_vertices(), control.threads(), |range| {
         let mut table = StencilTable::new();

@@ -78,7 +78,8 @@ unsafe fn build(
 
 /// Tessellate uniformly: `rate` x `rate` cells per quad, `ceil(rate / 2)` per sub-face of
 /// an N-gon (1 <= rate <= 4096). `quads` non-zero keeps grid cells as quads. Errors:
-/// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a rate out of range.
+/// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a rate out of range or more than 2^24 cells in all
+/// (checked before building).
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_tessellation_new_uniform(
     evaluator: *const profsubd_evaluator,
@@ -92,8 +93,8 @@ pub unsafe extern "C" fn profsubd_tessellation_new_uniform(
 /// Tessellate adaptively: no triangle farther than `tolerance` (model units, > 0) from the
 /// limit surface at its check points, rates up to `max_rate` (1..=4096; faces that reach it
 /// and still miss are counted by `profsubd_tessellation_num_unmet`). Errors:
-/// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a tolerance that is not positive and finite, or a
-/// `max_rate` out of range.
+/// `PROFSUBD_ERROR_INVALID_ARGUMENT` for a tolerance that is not positive and finite, a
+/// `max_rate` out of range, or rates that would make more than 2^24 cells in all.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_tessellation_new_adaptive(
     evaluator: *const profsubd_evaluator,

@@ -60,11 +60,12 @@ pub fn refine_uniform_ordered(
 }
 
 /// [`refine_uniform_ordered`] with progress, cancellation and a memory budget: `control` is
-/// polled through each level's topology and positions (every thousandth face, edge or
-/// vertex of each pass; the work of level `k` counted as `4^k`), and the refinement refused
-/// before allocating when [`refined_bytes`] is above the budget. Each level's positions are
-/// computed on `control`'s threads ([`Control::threads`], 0: all cores), the same bit for bit
-/// for every count; its topology on the calling thread.
+/// polled through the base level's topology (at fraction 0) and each level's topology and
+/// positions (every thousandth face, edge or vertex of each pass; the work of level `k`
+/// counted as `4^k`), and the refinement refused before allocating when [`refined_bytes`] is
+/// above the budget. Each level's positions are computed on `control`'s threads
+/// ([`Control::threads`], 0: all cores), the same bit for bit for every count; its topology
+/// on the calling thread.
 ///
 /// Errors: those of [`refine_uniform`]; [`Error::Cancelled`] and [`Error::LimitExceeded`]
 /// from `control`.
@@ -81,14 +82,10 @@ pub fn refine_uniform_with(
         &format!("refining {} faces {level} times", mesh.num_faces()),
         refined_bytes(mesh, level),
     )?;
-    let refined = refine_base(
-        mesh,
-        Level::from_mesh_with_options(mesh, options),
-        options,
-        level,
-        order,
-        control,
-    )?;
+    // The base level's topology: polled, though counted as no work (level 0 costs 4^0 of
+    // the 4^k the fractions below count).
+    let base = Level::from_mesh_polled(mesh, options, &control.stage(0.0, 0.0))?;
+    let refined = refine_base(mesh, base, options, level, order, control)?;
     control.report(1.0)?;
     Ok(refined)
 }

@@ -56,6 +56,12 @@ use stitch::{stitch, Spot, Stitched};
 /// Largest rate (segments per side of a parametric face) accepted.
 pub const MAX_RATE: u32 = 4096;
 
+/// Most grid cells (the sum of every parametric face's rate²) one tessellation makes: 2^24,
+/// about 33 million triangles, as many as the refiner's [`crate::refine::MAX_REFINED_FACE_INDICES`]
+/// allow quads. Checked from the rates before anything is built: a cube at rate 4096 asks
+/// for 10^8 cells, gigabytes.
+pub const MAX_CELLS: u64 = 1 << 24;
+
 /// How finely to cut each parametric face.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Rate {
@@ -195,7 +201,9 @@ enum Key {
 /// Tessellate the limit surface of `ev` (see the [module documentation](self)).
 ///
 /// Errors ([`Error::InvalidArgument`]): a rate outside `1..=MAX_RATE`, a tolerance that is
-/// not positive and finite, `max_rate` outside `1..=MAX_RATE`; errors of evaluation.
+/// not positive and finite, `max_rate` outside `1..=MAX_RATE`, rates that would make more
+/// than [`MAX_CELLS`] cells (checked before building; in adaptive mode when a raise would);
+/// errors of evaluation.
 pub fn tessellate(ev: &Evaluator, options: &TessellateOptions) -> Result<Tessellation> {
     if !(1..=MAX_RATE).contains(&options.max_rate) {
         return Err(Error::invalid_argument(format!(
@@ -439,6 +447,13 @@ impl<'a> Plan<'a> {
     }
 
     fn build(&self, rates: &[u32], quads: bool) -> Result<Tessellation> {
+        let cells: u64 = rates.iter().map(|&r| u64::from(r) * u64::from(r)).sum();
+        if cells > MAX_CELLS {
+            return Err(Error::invalid_argument(format!(
+                "tessellating {} parametric faces at these rates would make {cells} cells, above the limit {MAX_CELLS}",
+                rates.len()
+            )));
+        }
         let ev = self.ev;
         let level = self.level;
         let ptex = ev.ptex_faces();

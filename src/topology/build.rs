@@ -7,6 +7,8 @@
 use super::level::{find_edge_in, Level};
 use crate::catmark::boundary;
 use crate::catmark::crease::{is_sharp, vertex_rule};
+use crate::control::Control;
+use crate::error::Result;
 use crate::mesh::Mesh;
 use crate::options::{BoundaryInterpolation, SubdivOptions};
 
@@ -22,24 +24,42 @@ impl Level {
         Level::from_mesh_ranked(mesh, options, None)
     }
 
+    /// [`Level::from_mesh_with_options`] reporting to `control` through its passes over the
+    /// faces (edges found, 0–50 %) and the vertices (counter-clockwise order, 50–80 %), then
+    /// before the local indices (80 %) and the tags (90 %): a base level of a large mesh is
+    /// tens of milliseconds, too long to leave a cancel request waiting.
+    ///
+    /// Errors: [`crate::Error::Cancelled`] from `control`.
+    pub(crate) fn from_mesh_polled(
+        mesh: &Mesh,
+        options: &SubdivOptions,
+        control: &Control,
+    ) -> Result<Level> {
+        let mut level = topology_from_face_vertices(
+            mesh.num_vertices(),
+            mesh.face_offsets(),
+            mesh.face_indices(),
+            *options,
+            None,
+            control,
+        )?;
+        control.report(0.9)?;
+        level.assign_tags_and_sharpness(tags_of(mesh));
+        control.report(1.0)?;
+        Ok(level)
+    }
+
     /// [`Level::from_mesh_with_options`] for a fragment of a larger mesh: `ranks[f]` orders
     /// the fragment's faces as that mesh orders them, so that the counter-clockwise order
     /// round an interior vertex starts at the same face as there (Far starts at the vertex's
     /// first face in face order). Chaikin creasing sums the sharpness around a vertex in that
     /// order, in `f32`, so the start shows in the last bits.
     pub fn from_mesh_ranked(mesh: &Mesh, options: &SubdivOptions, ranks: Option<&[u32]>) -> Level {
-        let creases = mesh.creases().iter().map(|c| (c.vertices, c.sharpness));
-        let corners = mesh.corners().iter().map(|c| (c.vertex, c.sharpness));
-        let tags = Tags {
-            creases,
-            corners,
-            holes: mesh.holes(),
-        };
         Level::from_faces(
             mesh.num_vertices(),
             mesh.face_offsets(),
             mesh.face_indices(),
-            tags,
+            tags_of(mesh),
             options,
             ranks,
         )
@@ -56,8 +76,15 @@ impl Level {
         options: &SubdivOptions,
         ranks: Option<&[u32]>,
     ) -> Level {
-        let mut level =
-            topology_from_face_vertices(nv, face_offsets, face_indices, *options, ranks);
+        let mut level = topology_from_face_vertices(
+            nv,
+            face_offsets,
+            face_indices,
+            *options,
+            ranks,
+            &Control::NONE,
+        )
+        .expect("a control without a hook never cancels");
         level.assign_tags_and_sharpness(tags);
         level
     }
@@ -240,6 +267,17 @@ pub(crate) struct Tags<'a, C, V> {
     pub holes: &'a [u32],
 }
 
+/// The crease, corner and hole tags of `mesh`.
+fn tags_of(
+    mesh: &Mesh,
+) -> Tags<'_, impl Iterator<Item = ([u32; 2], f32)> + '_, impl Iterator<Item = (u32, f32)> + '_> {
+    Tags {
+        creases: mesh.creases().iter().map(|c| (c.vertices, c.sharpness)),
+        corners: mesh.corners().iter().map(|c| (c.vertex, c.sharpness)),
+        holes: mesh.holes(),
+    }
+}
+
 /// Offsets of rows of the given lengths (`offsets[i]..offsets[i + 1]` is row `i`).
 fn offsets_of(lengths: impl IntoIterator<Item = u32>) -> Vec<u32> {
     let lengths = lengths.into_iter();
@@ -258,14 +296,15 @@ fn offsets_of(lengths: impl IntoIterator<Item = u32>) -> Vec<u32> {
 /// Flat arrays throughout: vertex-face rows are counted first; vertex-edge rows get room for
 /// two edges per incident face-vertex (the most a face-vertex can create) and are compacted
 /// at the end; edge-face rows are filled once all edges are known, in the order the faces
-/// met the edge.
+/// met the edge. `control` is polled as [`Level::from_mesh_polled`] says (up to 80 %).
 fn topology_from_face_vertices(
     nv: usize,
     face_offsets: &[u32],
     face_indices: &[u32],
     options: SubdivOptions,
     ranks: Option<&[u32]>,
-) -> Level {
+    control: &Control,
+) -> Result<Level> {
     let nf = face_offsets.len() - 1;
     let face_offsets = face_offsets.to_vec();
     let face_verts = face_indices.to_vec();
@@ -290,7 +329,9 @@ fn topology_from_face_vertices(
     let mut edge_last_face: Vec<u32> = Vec::with_capacity(nfv);
     let mut non_manifold_edges: Vec<u32> = Vec::new();
 
+    let faces_pass = control.stage(0.0, 0.5);
     for f in 0..nf {
+        faces_pass.step(f, nf)?;
         let (start, end) = (face_offsets[f] as usize, face_offsets[f + 1] as usize);
         let n = end - start;
         for i in 0..n {
@@ -388,7 +429,9 @@ fn topology_from_face_vertices(
         vert_rules: Vec::new(),
     };
     let (mut faces, mut edges) = (Vec::new(), Vec::new());
+    let vertices_pass = control.stage(0.5, 0.8);
     for v in 0..nv {
+        vertices_pass.step(v, nv)?;
         if level.vert_non_manifold[v] {
             continue;
         }
@@ -404,8 +447,9 @@ fn topology_from_face_vertices(
             None => level.vert_non_manifold[v] = true,
         }
     }
+    control.report(0.8)?;
     level.populate_local_indices();
-    level
+    Ok(level)
 }
 
 /// For each component `c` (rows of `offsets`/`members`) and each face `f` listed for it, the

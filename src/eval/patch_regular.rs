@@ -209,20 +209,18 @@ fn is_single_fan(fan: &[FanFace]) -> bool {
     let f = fan[0].face;
     let mut visited = 1;
     for forward in [true, false] {
-        let mut g = f;
+        // `c` is in each face once, so a face's entry is the face.
+        let mut at = &fan[0];
         loop {
-            let Some(at) = fan.iter().find(|e| e.face == g) else {
-                return false;
-            };
             let d = if forward { at.next } else { at.prev };
-            match across(fan, g, d) {
+            match across(fan, at.face, d) {
                 Some(h) if h.face == f => return visited == nfaces,
                 Some(h) => {
                     visited += 1;
                     if visited > nfaces {
                         return false;
                     }
-                    g = h.face;
+                    at = h;
                 }
                 None => break,
             }

@@ -11,6 +11,8 @@
 //! under a semi-sharp crease has a handful of terms, not the 30-odd control points it
 //! depends on.
 
+use std::cell::RefCell;
+
 use glam::DVec3;
 
 use crate::control::Control;
@@ -37,56 +39,51 @@ pub(crate) struct PointProgram {
 /// which edge and vertex points read) rather than a parent vertex.
 const CHILD: u32 = 1 << 31;
 
-/// Terms a [`Recorded`] holds in place; more (vertices of valence above 5) spill to the heap.
-const INLINE_TERMS: usize = 12;
+thread_local! {
+    /// The terms of the [`Recorded`] values [`PointProgram::record`] has interpolation
+    /// build, one value after the other: interpolation completes each value (zero, its
+    /// terms, finish) before it starts the next, so a value's terms are one run here.
+    static TERMS: RefCell<Vec<(u32, f64)>> = const { RefCell::new(Vec::new()) };
+}
 
 /// A refined vertex as the weighted sum interpolation built: its terms over parent vertices
-/// and (with [`CHILD`]) earlier child vertices, in the order they were added. Held in place
-/// rather than in a `Vec` each: a build records millions of them.
+/// and (with [`CHILD`]) earlier child vertices, in the order they were added, are
+/// `TERMS[first..first + len]`. A few bytes rather than its terms in place: a build records
+/// millions of them.
 #[derive(Debug, Clone)]
 struct Recorded {
     /// This vertex: its parent index, or [`CHILD`] | its child index once complete.
     own: u32,
+    first: u32,
     len: u32,
-    sources: [u32; INLINE_TERMS],
-    weights: [f64; INLINE_TERMS],
-    /// Terms past [`INLINE_TERMS`].
-    spill: Vec<(u32, f64)>,
 }
 
 impl Recorded {
     fn vertex(own: u32) -> Recorded {
         Recorded {
             own,
+            first: 0,
             len: 0,
-            sources: [0; INLINE_TERMS],
-            weights: [0.0; INLINE_TERMS],
-            spill: Vec::new(),
         }
-    }
-
-    fn terms(&self) -> impl Iterator<Item = (u32, f64)> + '_ {
-        let n = (self.len as usize).min(INLINE_TERMS);
-        self.sources[..n]
-            .iter()
-            .copied()
-            .zip(self.weights[..n].iter().copied())
-            .chain(self.spill.iter().copied())
     }
 }
 
 impl Primvar for Recorded {
     fn zero() -> Self {
-        Recorded::vertex(0)
+        let first = TERMS.with(|t| t.borrow().len() as u32);
+        Recorded {
+            own: 0,
+            first,
+            len: 0,
+        }
     }
     fn add_weighted(&mut self, src: &Self, weight: f64) {
-        let k = self.len as usize;
-        if k < INLINE_TERMS {
-            self.sources[k] = src.own;
-            self.weights[k] = weight;
-        } else {
-            self.spill.push((src.own, weight));
-        }
+        TERMS.with(|t| {
+            let mut terms = t.borrow_mut();
+            // The terms of one value must be one run (see `TERMS`).
+            assert_eq!(terms.len(), (self.first + self.len) as usize);
+            terms.push((src.own, weight));
+        });
         self.len += 1;
     }
     fn finish(&mut self, child: u32) {
@@ -110,15 +107,6 @@ impl PointProgram {
         self.num_control as usize + self.offsets.len() - 1
     }
 
-    fn push(&mut self, terms: impl IntoIterator<Item = (u32, f64)>) -> u32 {
-        for (s, w) in terms {
-            self.sources.push(s);
-            self.weights.push(w);
-        }
-        self.offsets.push(self.sources.len() as u32);
-        self.num_points() as u32 - 1
-    }
-
     /// The points of the child of refinement `r` of `level`, whose vertices are points
     /// `parent`, recorded as new local points; returns the child vertices' points. Face
     /// points come first, then edge points, then vertex points: the order refinement
@@ -127,7 +115,10 @@ impl PointProgram {
         let src: Vec<Recorded> = (0..level.num_vertices() as u32)
             .map(Recorded::vertex)
             .collect();
+        TERMS.with(|t| t.borrow_mut().clear());
         let dst = interpolate(level, r, &src);
+        // Taken out, so that the terms' memory is not held after the build.
+        let terms = TERMS.with(|t| std::mem::take(&mut *t.borrow_mut()));
         let mut points = vec![0u32; dst.len()];
         let first_face = r.face_child_vertex(0) as usize;
         let faces = first_face..first_face + level.num_faces();
@@ -135,16 +126,23 @@ impl PointProgram {
         let edges = first_edge..first_edge + level.num_edges();
         let first_vertex = r.vertex_child_vertex(0) as usize;
         let vertices = first_vertex..first_vertex + level.num_vertices();
+        self.sources.reserve(terms.len());
+        self.weights.reserve(terms.len());
+        self.offsets.reserve(dst.len());
         for cv in faces.chain(edges).chain(vertices) {
-            let terms = dst[cv].terms().map(|(s, w)| {
+            let d = &dst[cv];
+            let run = &terms[d.first as usize..(d.first + d.len) as usize];
+            for &(s, w) in run {
                 let p = if s & CHILD != 0 {
                     points[(s & !CHILD) as usize]
                 } else {
                     parent[s as usize]
                 };
-                (p, w)
-            });
-            points[cv] = self.push(terms);
+                self.sources.push(p);
+                self.weights.push(w);
+            }
+            self.offsets.push(self.sources.len() as u32);
+            points[cv] = self.num_points() as u32 - 1;
         }
         points
     }
@@ -235,21 +233,33 @@ impl PointProgram {
                 }
             }
         }
+        // Compacted in place: a kept point and its terms move to a place at or before
+        // their own, and it reads only earlier points, renumbered before it.
         let mut renumber: Vec<u32> = (0..nc as u32).collect();
         renumber.resize(np, u32::MAX);
-        let mut kept = PointProgram::new(nc);
+        let (mut rows, mut terms) = (0, 0);
         for p in nc..np {
             if !needed[p] {
                 continue;
             }
             let k = p - nc;
             let (a, b) = (self.offsets[k] as usize, self.offsets[k + 1] as usize);
-            let terms = self.sources[a..b]
-                .iter()
-                .zip(&self.weights[a..b])
-                .map(|(&s, &w)| (renumber[s as usize], w));
-            renumber[p] = kept.push(terms);
+            for j in a..b {
+                self.sources[terms] = renumber[self.sources[j] as usize];
+                self.weights[terms] = self.weights[j];
+                terms += 1;
+            }
+            // Row `k`'s start is read above before row `rows` (at most `k`) ends here.
+            self.offsets[rows + 1] = terms as u32;
+            renumber[p] = (nc + rows) as u32;
+            rows += 1;
         }
+        self.offsets.truncate(rows + 1);
+        self.sources.truncate(terms);
+        self.weights.truncate(terms);
+        self.offsets.shrink_to_fit();
+        self.sources.shrink_to_fit();
+        self.weights.shrink_to_fit();
         for list in roots.iter_mut() {
             for p in list.iter_mut() {
                 if *p != u32::MAX {
@@ -257,6 +267,5 @@ impl PointProgram {
                 }
             }
         }
-        *self = kept;
     }
 }

@@ -11,8 +11,6 @@
 //! under a semi-sharp crease has a handful of terms, not the 30-odd control points it
 //! depends on.
 
-use std::cell::RefCell;
-
 use glam::DVec3;
 
 use crate::control::Control;
@@ -39,51 +37,56 @@ pub(crate) struct PointProgram {
 /// which edge and vertex points read) rather than a parent vertex.
 const CHILD: u32 = 1 << 31;
 
-thread_local! {
-    /// The terms of the [`Recorded`] values [`PointProgram::record`] has interpolation
-    /// build, one value after the other: interpolation completes each value (zero, its
-    /// terms, finish) before it starts the next, so a value's terms are one run here.
-    static TERMS: RefCell<Vec<(u32, f64)>> = const { RefCell::new(Vec::new()) };
-}
+/// Terms a [`Recorded`] holds in place; more (vertices of valence above 5) spill to the heap.
+const INLINE_TERMS: usize = 12;
 
 /// A refined vertex as the weighted sum interpolation built: its terms over parent vertices
-/// and (with [`CHILD`]) earlier child vertices, in the order they were added, are
-/// `TERMS[first..first + len]`. A few bytes rather than its terms in place: a build records
-/// millions of them.
+/// and (with [`CHILD`]) earlier child vertices, in the order they were added. Held in place
+/// rather than in a `Vec` each: a build records millions of them.
 #[derive(Debug, Clone)]
 struct Recorded {
     /// This vertex: its parent index, or [`CHILD`] | its child index once complete.
     own: u32,
-    first: u32,
     len: u32,
+    sources: [u32; INLINE_TERMS],
+    weights: [f64; INLINE_TERMS],
+    /// Terms past [`INLINE_TERMS`].
+    spill: Vec<(u32, f64)>,
 }
 
 impl Recorded {
     fn vertex(own: u32) -> Recorded {
         Recorded {
             own,
-            first: 0,
             len: 0,
+            sources: [0; INLINE_TERMS],
+            weights: [0.0; INLINE_TERMS],
+            spill: Vec::new(),
         }
+    }
+
+    fn terms(&self) -> impl Iterator<Item = (u32, f64)> + '_ {
+        let n = (self.len as usize).min(INLINE_TERMS);
+        self.sources[..n]
+            .iter()
+            .copied()
+            .zip(self.weights[..n].iter().copied())
+            .chain(self.spill.iter().copied())
     }
 }
 
 impl Primvar for Recorded {
     fn zero() -> Self {
-        let first = TERMS.with(|t| t.borrow().len() as u32);
-        Recorded {
-            own: 0,
-            first,
-            len: 0,
-        }
+        Recorded::vertex(0)
     }
     fn add_weighted(&mut self, src: &Self, weight: f64) {
-        TERMS.with(|t| {
-            let mut terms = t.borrow_mut();
-            // The terms of one value must be one run (see `TERMS`).
-            assert_eq!(terms.len(), (self.first + self.len) as usize);
-            terms.push((src.own, weight));
-        });
+        let k = self.len as usize;
+        if k < INLINE_TERMS {
+            self.sources[k] = src.own;
+            self.weights[k] = weight;
+        } else {
+            self.spill.push((src.own, weight));
+        }
         self.len += 1;
     }
     fn finish(&mut self, child: u32) {
@@ -107,6 +110,15 @@ impl PointProgram {
         self.num_control as usize + self.offsets.len() - 1
     }
 
+    fn push(&mut self, terms: impl IntoIterator<Item = (u32, f64)>) -> u32 {
+        for (s, w) in terms {
+            self.sources.push(s);
+            self.weights.push(w);
+        }
+        self.offsets.push(self.sources.len() as u32);
+        self.num_points() as u32 - 1
+    }
+
     /// The points of the child of refinement `r` of `level`, whose vertices are points
     /// `parent`, recorded as new local points; returns the child vertices' points. Face
     /// points come first, then edge points, then vertex points: the order refinement
@@ -115,10 +127,7 @@ impl PointProgram {
         let src: Vec<Recorded> = (0..level.num_vertices() as u32)
             .map(Recorded::vertex)
             .collect();
-        TERMS.with(|t| t.borrow_mut().clear());
         let dst = interpolate(level, r, &src);
-        // Taken out, so that the terms' memory is not held after the build.
-        let terms = TERMS.with(|t| std::mem::take(&mut *t.borrow_mut()));
         let mut points = vec![0u32; dst.len()];
         let first_face = r.face_child_vertex(0) as usize;
         let faces = first_face..first_face + level.num_faces();
@@ -126,23 +135,16 @@ impl PointProgram {
         let edges = first_edge..first_edge + level.num_edges();
         let first_vertex = r.vertex_child_vertex(0) as usize;
         let vertices = first_vertex..first_vertex + level.num_vertices();
-        self.sources.reserve(terms.len());
-        self.weights.reserve(terms.len());
-        self.offsets.reserve(dst.len());
         for cv in faces.chain(edges).chain(vertices) {
-            let d = &dst[cv];
-            let run = &terms[d.first as usize..(d.first + d.len) as usize];
-            for &(s, w) in run {
+            let terms = dst[cv].terms().map(|(s, w)| {
                 let p = if s & CHILD != 0 {
                     points[(s & !CHILD) as usize]
                 } else {
                     parent[s as usize]
                 };
-                self.sources.push(p);
-                self.weights.push(w);
-            }
-            self.offsets.push(self.sources.len() as u32);
-            points[cv] = self.num_points() as u32 - 1;
+                (p, w)
+            });
+            points[cv] = self.push(terms);
         }
         points
     }

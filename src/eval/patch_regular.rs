@@ -410,7 +410,7 @@ impl PatchTest {
         }
         for g in &mut self.fans[first..] {
             let [next, prev] = g.edges.map(|k| u8::from(sharp & (1 << k) != 0));
-            g.sharp = next * SHARP_NEXT | prev * SHARP_PREV;
+            g.sharp = (next * SHARP_NEXT) | (prev * SHARP_PREV);
         }
         let fan = &self.fans[first..];
         // Whether the faces form one fan does not depend on the face the walk starts from.

@@ -21,8 +21,6 @@
 //! on an interior non-manifold crease (refined vertices that descend from edge points are
 //! never sharpened from topology: [`Neighbourhood::is_edge_descendant`]).
 
-use std::borrow::Cow;
-
 use glam::DVec3;
 
 use super::bspline::{BicubicPatch, BoundaryMask};
@@ -62,115 +60,29 @@ fn neighbours(face: &[u32], i: usize) -> (u32, u32) {
     (next, prev)
 }
 
-/// Most faces at a vertex whose neighbours [`VertexStar`] keeps; more (only at odd
-/// non-manifold vertices) are read from the fragment again when needed.
-const FAN_CAPACITY: usize = MAX_VALENCE;
-
-/// A face at a vertex `c` with the vertices after and before `c` in it.
-#[derive(Debug, Clone, Copy, Default)]
+/// A face at a vertex `c`: the vertices after and before `c` in it, the vertex opposite `c`
+/// in a quad, and which of the face's two edges at `c` are infinitely sharp. A classified
+/// vertex keeps its faces as these (in `vertex_faces` order), so that the tests of the
+/// four quads it is a corner of read them instead of walking the fragment again.
+#[derive(Debug, Clone, Copy)]
 struct FanFace {
     face: u32,
     next: u32,
     prev: u32,
+    /// The vertex opposite `c` when the face is a quad, else [`NO_POINT`].
+    opposite: u32,
+    /// The edges `(c, next)` and `(c, prev)` in the star of `c` while it is classified.
+    edges: [u8; 2],
+    /// [`SHARP_NEXT`] and [`SHARP_PREV`]: which of these edges are infinitely sharp.
+    sharp: u8,
 }
 
-/// The edges at vertex `c`, and its faces in `vertex_faces` order with their neighbours of
-/// `c` (the patch test walks them many times; reading them off the fragment each time costs
-/// more than the rest of the test).
-struct VertexStar {
-    edges: [EdgeAt; MAX_VALENCE],
-    len: usize,
-    fan: [FanFace; FAN_CAPACITY],
-    /// Faces at `c`; all of them are in `fan` when at most [`FAN_CAPACITY`].
-    fan_len: usize,
-}
+const SHARP_NEXT: u8 = 1;
+const SHARP_PREV: u8 = 2;
 
-impl VertexStar {
-    fn new() -> VertexStar {
-        VertexStar {
-            edges: [EdgeAt::default(); MAX_VALENCE],
-            len: 0,
-            fan: [FanFace::default(); FAN_CAPACITY],
-            fan_len: 0,
-        }
-    }
-
-    /// The star of `c` into `self` (reused: a star is a few hundred bytes); `None` when `c`
-    /// is too complex for a regular patch (repeated in a face, too many edges).
-    fn fill(&mut self, nb: &Neighbourhood, c: u32) -> Option<()> {
-        self.len = 0;
-        self.fan_len = 0;
-        for &g in nb.vertex_faces(c) {
-            let face = nb.face(g);
-            let i = face.iter().position(|&x| x == c)?;
-            if face[i + 1..].contains(&c) {
-                return None;
-            }
-            let (next, prev) = neighbours(face, i);
-            self.add(next, true)?;
-            self.add(prev, false)?;
-            if let Some(slot) = self.fan.get_mut(self.fan_len) {
-                *slot = FanFace {
-                    face: g,
-                    next,
-                    prev,
-                };
-            }
-            self.fan_len += 1;
-        }
-        Some(())
-    }
-
-    /// The faces at `c` (this star's vertex) in `vertex_faces` order, from the stored fan
-    /// or, past its capacity, read from the fragment again.
-    fn faces(&self, nb: &Neighbourhood, c: u32) -> Cow<'_, [FanFace]> {
-        if self.fan_len <= FAN_CAPACITY {
-            return Cow::Borrowed(&self.fan[..self.fan_len]);
-        }
-        let read = nb.vertex_faces(c).iter().map(|&g| {
-            let face = nb.face(g);
-            // `c` is in each of its faces exactly once (else there is no star).
-            let i = face.iter().position(|&x| x == c).unwrap_or(0);
-            let (next, prev) = neighbours(face, i);
-            FanFace {
-                face: g,
-                next,
-                prev,
-            }
-        });
-        Cow::Owned(read.collect())
-    }
-
-    fn add(&mut self, other: u32, outgoing: bool) -> Option<()> {
-        let k = match self.edges[..self.len].iter().position(|e| e.other == other) {
-            Some(k) => k,
-            None => {
-                if self.len == MAX_VALENCE {
-                    return None;
-                }
-                self.edges[self.len] = EdgeAt {
-                    other,
-                    out: 0,
-                    inc: 0,
-                };
-                self.len += 1;
-                self.len - 1
-            }
-        };
-        if outgoing {
-            self.edges[k].out += 1;
-        } else {
-            self.edges[k].inc += 1;
-        }
-        Some(())
-    }
-
-    fn edges(&self) -> &[EdgeAt] {
-        &self.edges[..self.len]
-    }
-
-    fn find(&self, other: u32) -> Option<&EdgeAt> {
-        self.edges().iter().find(|e| e.other == other)
+impl FanFace {
+    fn is_quad(&self) -> bool {
+        self.opposite != NO_POINT
     }
 }
 
@@ -190,7 +102,24 @@ fn is_infinite(s: f32) -> bool {
 /// True when two faces at `c` share more than two vertices. That happens below a face that
 /// repeats a vertex: its children meet along two distinct edges joining the same pair of
 /// vertices, which a fragment keyed by vertex pairs cannot tell from one manifold edge.
-fn faces_overlap(nb: &Neighbourhood, c: u32) -> bool {
+/// `fan`: the faces at `c`, none repeating `c`.
+fn faces_overlap(nb: &Neighbourhood, c: u32, fan: &[FanFace]) -> bool {
+    if fan.iter().all(FanFace::is_quad) {
+        // Each quad's vertices other than `c`; two quads that share `c` overlap when two of
+        // these (counted in the first quad with repetition) are also the other's.
+        let others = |g: &FanFace| [g.next, g.opposite, g.prev];
+        for (i, a) in fan.iter().enumerate() {
+            let a = others(a);
+            for b in &fan[i + 1..] {
+                let b = others(b);
+                let shared = a.iter().filter(|x| b.contains(x)).count();
+                if shared >= 2 {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
     let faces = nb.vertex_faces(c);
     for (i, &a) in faces.iter().enumerate() {
         let face_a = nb.face(a);
@@ -199,8 +128,13 @@ fn faces_overlap(nb: &Neighbourhood, c: u32) -> bool {
                 return true;
             }
             let face_b = nb.face(b);
-            let mut shared = face_a.iter().filter(|x| face_b.contains(x));
-            if shared.nth(2).is_some() {
+            let mut shared = 0;
+            for x in face_a {
+                if face_b.contains(x) {
+                    shared += 1;
+                }
+            }
+            if shared > 2 {
                 return true;
             }
         }
@@ -226,123 +160,67 @@ enum VertexClass {
     Crease,
 }
 
-/// Classify vertex `c` from its star (filled here into `star`), its edges' and faces'
-/// counts and tags, and [`faces_overlap`]. Effective sharpness as the module doc says.
-fn classify(
-    nb: &Neighbourhood,
-    c: u32,
-    star: &mut VertexStar,
-    options: &SubdivOptions,
-) -> VertexClass {
-    if star.fill(nb, c).is_none() {
-        return VertexClass::Irregular;
-    }
-    let faces = nb.vertex_faces(c);
-    let nfaces = faces.len();
-    let nedges = star.len;
-    let mut infinite = 0;
-    let mut nonmanifold_edges = 0;
-    let mut boundary_edges = 0;
-    for e in star.edges() {
-        let s = edge_sharpness(nb, c, e);
-        if s > 0.0 && !is_infinite(s) {
-            return VertexClass::Irregular;
+/// Whether the crease vertex whose faces are `fan` is a crease corner of quad `f`, whose
+/// edge `(c, smooth_end)` is the smooth one: the sector on `f`'s side is `f` and the quad
+/// across that edge, which must itself end on the other sharp edge.
+fn crease_fits(fan: &[FanFace], f: u32, smooth_end: u32) -> bool {
+    match across(fan, f, smooth_end) {
+        Some(g) if g.is_quad() => {
+            let sharp = if g.next == smooth_end {
+                SHARP_PREV
+            } else {
+                SHARP_NEXT
+            };
+            g.sharp & sharp != 0
         }
-        infinite += usize::from(is_infinite(s));
-        boundary_edges += usize::from(e.count() == 1);
-        nonmanifold_edges += usize::from(e.count() != 1 && !e.is_manifold());
-    }
-    // Whether the faces form one fan does not depend on the face the walk starts from.
-    let manifold = nonmanifold_edges == 0 && is_single_fan(nb, star, c, faces[0], nfaces);
-    let mut vertex = nb.vertex_tag(c);
-    if nfaces == 1 && nedges == 2 && options.boundary == BoundaryInterpolation::EdgeAndCorner {
-        vertex = SHARPNESS_INFINITE;
-    }
-    // Far leaves the vertex of an interior non-manifold crease (two non-manifold edges, no
-    // boundary, more faces than edges) alone.
-    // Only base vertices are sharpened from topology.
-    let on_nonmanifold_crease = nonmanifold_edges == 2 && boundary_edges == 0 && nfaces > nedges;
-    if !manifold && !on_nonmanifold_crease && !nb.is_edge_descendant(c) {
-        vertex = SHARPNESS_INFINITE;
-    }
-    if vertex > 0.0 && !is_infinite(vertex) {
-        return VertexClass::Irregular;
-    }
-    let class = if vertex > 0.0 || infinite > 2 {
-        VertexClass::CornerRule
-    } else if infinite == 0 && manifold && nfaces == 4 && nedges == 4 && all_quads(nb, c) {
-        VertexClass::Smooth
-    } else if infinite == 2 {
-        VertexClass::Crease
-    } else {
-        VertexClass::Irregular
-    };
-    // A seemingly regular corner whose faces overlap in more than an edge is irregular.
-    if class != VertexClass::Irregular && faces_overlap(nb, c) {
-        VertexClass::Irregular
-    } else {
-        class
-    }
-}
-
-/// Whether the crease vertex `c` (star `star`) is a crease corner of quad `f`, whose edge
-/// `(c, smooth_end)` is the smooth one: the sector on `f`'s side is `f` and the quad across
-/// that edge, which must itself end on the other sharp edge.
-fn crease_fits(nb: &Neighbourhood, star: &VertexStar, f: u32, c: u32, smooth_end: u32) -> bool {
-    match across(nb, star, f, c, smooth_end) {
-        Some((g, beyond)) if nb.face(g).len() == 4 => star
-            .find(beyond)
-            .is_some_and(|e| is_infinite(edge_sharpness(nb, c, e))),
         _ => false,
     }
 }
 
-fn all_quads(nb: &Neighbourhood, c: u32) -> bool {
-    nb.vertex_faces(c).iter().all(|&g| nb.face(g).len() == 4)
-}
-
-/// The face other than `f` on edge `(c, d)` and, in it, the vertex next to `c` that is not
-/// `d`. `None` unless the edge has exactly one other face. `star` is `c`'s.
-fn across(nb: &Neighbourhood, star: &VertexStar, f: u32, c: u32, d: u32) -> Option<(u32, u32)> {
+/// The face other than `f` among the faces `fan` at `c` on edge `(c, d)`; `None` unless the
+/// edge has exactly one other face there.
+fn across(fan: &[FanFace], f: u32, d: u32) -> Option<&FanFace> {
     let mut found = None;
-    for g in star.faces(nb, c).iter() {
-        if g.face == f {
+    for g in fan {
+        if g.face == f || (g.next != d && g.prev != d) {
             continue;
         }
-        let other = if g.next == d {
-            g.prev
-        } else if g.prev == d {
-            g.next
-        } else {
-            continue;
-        };
         if found.is_some() {
             return None;
         }
-        found = Some((g.face, other));
+        found = Some(g);
     }
     found
 }
 
-/// True when the faces around `c` (whose star is `star`) form one fan (walking across
-/// manifold edges from `f` reaches all `nfaces` of them).
-fn is_single_fan(nb: &Neighbourhood, star: &VertexStar, c: u32, f: u32, nfaces: usize) -> bool {
+/// The vertex next to `c` in fan face `g` that is not `d` (`d` one of them).
+fn other_side(g: &FanFace, d: u32) -> u32 {
+    if g.next == d {
+        g.prev
+    } else {
+        g.next
+    }
+}
+
+/// True when the faces `fan` around a vertex form one fan (walking across manifold edges
+/// from the first reaches all of them).
+fn is_single_fan(fan: &[FanFace]) -> bool {
+    let nfaces = fan.len();
+    let f = fan[0].face;
     let mut visited = 1;
     for forward in [true, false] {
-        let mut g = f;
+        // `c` is in each face once, so a face's entry is the face.
+        let mut at = &fan[0];
         loop {
-            let Some(&at) = star.faces(nb, c).iter().find(|e| e.face == g) else {
-                return false;
-            };
             let d = if forward { at.next } else { at.prev };
-            match across(nb, star, g, c, d) {
-                Some((h, _)) if h == f => return visited == nfaces,
-                Some((h, _)) => {
+            match across(fan, at.face, d) {
+                Some(h) if h.face == f => return visited == nfaces,
+                Some(h) => {
                     visited += 1;
                     if visited > nfaces {
                         return false;
                     }
-                    g = h;
+                    at = h;
                 }
                 None => break,
             }
@@ -404,13 +282,18 @@ pub fn regular_patch_points(
     PatchTest::new().points(nb, f, options)
 }
 
-/// The patch test's working memory, reused from face to face of one fragment (a star is a
-/// few hundred bytes to clear otherwise), and each vertex's [`VertexClass`] once known:
-/// every vertex is a corner of four faces, and most of the test does not depend on the face.
+/// The patch test's working memory, reused from face to face of one fragment, and each
+/// vertex's [`VertexClass`] and faces once known: every vertex is a corner of four faces,
+/// and most of the test does not depend on the face.
 pub struct PatchTest {
-    star: VertexStar,
+    /// The edges at the vertex being classified.
+    star: [EdgeAt; MAX_VALENCE],
+    star_len: usize,
     /// Per vertex of the fragment [`PatchTest::start`] was given.
     classes: Vec<VertexClass>,
+    /// Per vertex of that fragment, once classified: its faces, `fans[a..b]`.
+    spans: Vec<(u32, u32)>,
+    fans: Vec<FanFace>,
 }
 
 impl Default for PatchTest {
@@ -419,45 +302,15 @@ impl Default for PatchTest {
     }
 }
 
-/// The face other than `f` on edge `(c, d)` (`c` in it once) and the position of `c` in it;
-/// `None` unless the edge has exactly one other face. As [`across`], without a star.
-fn across_at(nb: &Neighbourhood, f: u32, c: u32, d: u32) -> Option<(u32, usize)> {
-    let mut found = None;
-    for &g in nb.vertex_faces(c) {
-        if g == f {
-            continue;
-        }
-        let face = nb.face(g);
-        let i = face.iter().position(|&x| x == c)?;
-        let (next, prev) = neighbours(face, i);
-        if next != d && prev != d {
-            continue;
-        }
-        if found.is_some() {
-            return None;
-        }
-        found = Some((g, i));
-    }
-    found
-}
-
-/// The vertex next to `c` in `face` (where `c` is at `i`) that is not `d`, as [`across`]
-/// picks it.
-fn other_neighbour(face: &[u32], i: usize, d: u32) -> u32 {
-    let (next, prev) = neighbours(face, i);
-    if next == d {
-        prev
-    } else {
-        next
-    }
-}
-
 impl PatchTest {
     /// A test that remembers nothing between faces until [`PatchTest::start`].
     pub fn new() -> PatchTest {
         PatchTest {
-            star: VertexStar::new(),
+            star: [EdgeAt::default(); MAX_VALENCE],
+            star_len: 0,
             classes: Vec::new(),
+            spans: Vec::new(),
+            fans: Vec::new(),
         }
     }
 
@@ -465,50 +318,185 @@ impl PatchTest {
     pub fn start(&mut self, num_vertices: usize) {
         self.classes.clear();
         self.classes.resize(num_vertices, VertexClass::Unknown);
+        self.spans.clear();
+        self.spans.resize(num_vertices, (0, 0));
+        self.fans.clear();
     }
 
-    /// The class of vertex `c`, remembered when `c` is a vertex of the started fragment.
-    fn class(&mut self, nb: &Neighbourhood, c: u32, options: &SubdivOptions) -> VertexClass {
-        match self.classes.get(c as usize) {
-            Some(&VertexClass::Unknown) => {
-                let class = classify(nb, c, &mut self.star, options);
-                self.classes[c as usize] = class;
-                class
+    /// Add the edge from the classified vertex to `other` (`outgoing`: as the faces
+    /// traverse it) to the star; its index, `None` past [`MAX_VALENCE`] edges.
+    fn add(&mut self, other: u32, outgoing: bool) -> Option<u8> {
+        let len = self.star_len;
+        let k = match self.star[..len].iter().position(|e| e.other == other) {
+            Some(k) => k,
+            None => {
+                if len == MAX_VALENCE {
+                    return None;
+                }
+                self.star[len] = EdgeAt {
+                    other,
+                    out: 0,
+                    inc: 0,
+                };
+                self.star_len += 1;
+                len
             }
-            Some(&known) => known,
-            None => classify(nb, c, &mut self.star, options),
+        };
+        if outgoing {
+            self.star[k].out += 1;
+        } else {
+            self.star[k].inc += 1;
+        }
+        Some(k as u8)
+    }
+
+    /// The faces of `c` appended to `fans` with the star of `c`; `None` when `c` is too
+    /// complex for a regular patch (repeated in a face, too many edges).
+    fn fill(&mut self, nb: &Neighbourhood, c: u32) -> Option<()> {
+        self.star_len = 0;
+        let faces = nb.vertex_faces(c);
+        // A face that repeats `c` is listed once per occurrence, one after the other.
+        if faces.windows(2).any(|w| w[0] == w[1]) {
+            return None;
+        }
+        for (&g, &i) in faces.iter().zip(nb.vertex_face_locals(c)) {
+            let face = nb.face(g);
+            let i = i as usize;
+            let (next, prev) = neighbours(face, i);
+            let next_edge = self.add(next, true)?;
+            let prev_edge = self.add(prev, false)?;
+            let opposite = if face.len() == 4 {
+                face[(i + 2) % 4]
+            } else {
+                NO_POINT
+            };
+            self.fans.push(FanFace {
+                face: g,
+                next,
+                prev,
+                opposite,
+                edges: [next_edge, prev_edge],
+                sharp: 0,
+            });
+        }
+        Some(())
+    }
+
+    /// Classify vertex `c` from its star, its edges' and faces' counts and tags, and
+    /// [`faces_overlap`]; its faces are appended to `fans` (from `fans.len()` before the
+    /// call), their sharp edges marked. Effective sharpness as the module doc says.
+    fn classify(&mut self, nb: &Neighbourhood, c: u32, options: &SubdivOptions) -> VertexClass {
+        let first = self.fans.len();
+        if self.fill(nb, c).is_none() {
+            return VertexClass::Irregular;
+        }
+        let nfaces = self.fans.len() - first;
+        let nedges = self.star_len;
+        let mut infinite = 0;
+        let mut nonmanifold_edges = 0;
+        let mut boundary_edges = 0;
+        let mut sharp = 0u32;
+        for (k, e) in self.star[..nedges].iter().enumerate() {
+            let s = edge_sharpness(nb, c, e);
+            if s > 0.0 && !is_infinite(s) {
+                return VertexClass::Irregular;
+            }
+            if is_infinite(s) {
+                infinite += 1;
+                sharp |= 1 << k;
+            }
+            boundary_edges += usize::from(e.count() == 1);
+            nonmanifold_edges += usize::from(e.count() != 1 && !e.is_manifold());
+        }
+        for g in &mut self.fans[first..] {
+            let [next, prev] = g.edges.map(|k| u8::from(sharp & (1 << k) != 0));
+            g.sharp = (next * SHARP_NEXT) | (prev * SHARP_PREV);
+        }
+        let fan = &self.fans[first..];
+        // Whether the faces form one fan does not depend on the face the walk starts from.
+        let manifold = nonmanifold_edges == 0 && is_single_fan(fan);
+        let mut vertex = nb.vertex_tag(c);
+        if nfaces == 1 && nedges == 2 && options.boundary == BoundaryInterpolation::EdgeAndCorner {
+            vertex = SHARPNESS_INFINITE;
+        }
+        // Far leaves the vertex of an interior non-manifold crease (two non-manifold edges,
+        // no boundary, more faces than edges) alone.
+        // Only base vertices are sharpened from topology.
+        let on_nonmanifold_crease =
+            nonmanifold_edges == 2 && boundary_edges == 0 && nfaces > nedges;
+        if !manifold && !on_nonmanifold_crease && !nb.is_edge_descendant(c) {
+            vertex = SHARPNESS_INFINITE;
+        }
+        if vertex > 0.0 && !is_infinite(vertex) {
+            return VertexClass::Irregular;
+        }
+        let class = if vertex > 0.0 || infinite > 2 {
+            VertexClass::CornerRule
+        } else if infinite == 0
+            && manifold
+            && nfaces == 4
+            && nedges == 4
+            && fan.iter().all(FanFace::is_quad)
+        {
+            VertexClass::Smooth
+        } else if infinite == 2 {
+            VertexClass::Crease
+        } else {
+            VertexClass::Irregular
+        };
+        // A seemingly regular corner whose faces overlap in more than an edge is irregular.
+        if class != VertexClass::Irregular && faces_overlap(nb, c, fan) {
+            VertexClass::Irregular
+        } else {
+            class
         }
     }
 
-    /// Whether corner `k` of quad `f` (vertex of class `class`, not smooth) fits a regular
-    /// patch, and if so whether `f`'s edge after it (from corner `k` to `k + 1`) is
-    /// infinitely sharp.
-    fn sharp_corner(
+    /// The class of vertex `c` and its faces' span in `fans`, remembered when `c` is a
+    /// vertex of the started fragment.
+    fn class(
         &mut self,
         nb: &Neighbourhood,
-        f: u32,
-        k: usize,
-        class: VertexClass,
-    ) -> Option<bool> {
-        let face = nb.face(f);
-        let c = face[k];
-        let (next, prev) = neighbours(face, k);
-        let star = &mut self.star;
-        star.fill(nb, c)?;
-        let sharp_next = is_infinite(edge_sharpness(nb, c, star.find(next)?));
-        let sharp_prev = is_infinite(edge_sharpness(nb, c, star.find(prev)?));
-        let fits = if class == VertexClass::CornerRule {
-            sharp_next && sharp_prev
-        } else {
-            let smooth_end = if sharp_next { prev } else { next };
-            sharp_next != sharp_prev && crease_fits(nb, star, f, c, smooth_end)
-        };
-        fits.then_some(sharp_next)
+        c: u32,
+        options: &SubdivOptions,
+    ) -> (VertexClass, (u32, u32)) {
+        match self.classes.get(c as usize) {
+            Some(&VertexClass::Unknown) => {
+                let first = self.fans.len() as u32;
+                let class = self.classify(nb, c, options);
+                let span = (first, self.fans.len() as u32);
+                self.classes[c as usize] = class;
+                self.spans[c as usize] = span;
+                (class, span)
+            }
+            Some(&known) => (known, self.spans[c as usize]),
+            None => {
+                let first = self.fans.len() as u32;
+                let class = self.classify(nb, c, options);
+                (class, (first, self.fans.len() as u32))
+            }
+        }
     }
 
     /// [`regular_patch_points`] for a face of the fragment of the last
     /// [`PatchTest::start`] (or of any fragment if none).
     pub fn points(
+        &mut self,
+        nb: &Neighbourhood,
+        f: u32,
+        options: &SubdivOptions,
+    ) -> Option<PatchPoints> {
+        let mark = self.fans.len();
+        let started = nb.num_vertices() <= self.classes.len();
+        let found = self.points_in(nb, f, options);
+        if !started {
+            // Faces of vertices not remembered: not needed after this face.
+            self.fans.truncate(mark);
+        }
+        found
+    }
+
+    fn points_in(
         &mut self,
         nb: &Neighbourhood,
         f: u32,
@@ -524,17 +512,35 @@ impl PatchTest {
             }
         }
         let mut classes = [VertexClass::Irregular; 4];
+        let mut spans = [(0, 0); 4];
         for k in 0..4 {
-            classes[k] = self.class(nb, face[k], options);
+            (classes[k], spans[k]) = self.class(nb, face[k], options);
             if classes[k] == VertexClass::Irregular {
                 return None;
             }
         }
+        let fans = &self.fans;
+        let fan = |k: usize| &fans[spans[k].0 as usize..spans[k].1 as usize];
         // Edge `k` (corner `k` to `k + 1`) is sharp as its first corner sees it; the edges
         // at a smooth vertex are all smooth.
         let mut boundary: BoundaryMask = 0;
         for (k, &class) in classes.iter().enumerate() {
-            if class != VertexClass::Smooth && self.sharp_corner(nb, f, k, class)? {
+            if class == VertexClass::Smooth {
+                continue;
+            }
+            let at = fan(k).iter().find(|g| g.face == f)?;
+            let sharp_next = at.sharp & SHARP_NEXT != 0;
+            let sharp_prev = at.sharp & SHARP_PREV != 0;
+            let fits = if class == VertexClass::CornerRule {
+                sharp_next && sharp_prev
+            } else {
+                let smooth_end = if sharp_next { at.prev } else { at.next };
+                sharp_next != sharp_prev && crease_fits(fan(k), f, smooth_end)
+            };
+            if !fits {
+                return None;
+            }
+            if sharp_next {
                 boundary |= 1 << k;
             }
         }
@@ -545,30 +551,41 @@ impl PatchTest {
             if boundary & (1 << k) != 0 {
                 continue;
             }
-            let (g, i) = across_at(nb, f, c, d)?;
-            let gf = nb.face(g);
-            let j = gf.iter().position(|&x| x == d)?;
-            pts[ACROSS_SLOTS[k].0] = other_neighbour(gf, i, d);
-            pts[ACROSS_SLOTS[k].1] = other_neighbour(gf, j, c);
+            let g = across(fan(k), f, d)?;
+            pts[ACROSS_SLOTS[k].0] = other_side(g, d);
+            pts[ACROSS_SLOTS[k].1] = if g.is_quad() {
+                g.opposite
+            } else {
+                let gf = nb.face(g.face);
+                let j = gf.iter().position(|&x| x == d)?;
+                other_neighbour(gf, j, c)
+            };
         }
         for k in 0..4 {
             if classes[k] != VertexClass::Smooth {
                 continue;
             }
-            let c = face[k];
-            let (g_next, _) = across_at(nb, f, c, face[(k + 1) % 4])?;
-            let (g_prev, _) = across_at(nb, f, c, face[(k + 3) % 4])?;
-            let g = *nb
-                .vertex_faces(c)
+            let fan = fan(k);
+            let g_next = across(fan, f, face[(k + 1) % 4])?.face;
+            let g_prev = across(fan, f, face[(k + 3) % 4])?.face;
+            let g = fan
                 .iter()
-                .find(|&&g| g != f && g != g_next && g != g_prev)?;
-            let gf = nb.face(g);
-            let i = gf.iter().position(|&x| x == c)?;
-            pts[DIAGONAL_SLOTS[k]] = gf[(i + 2) % 4];
+                .find(|g| g.face != f && g.face != g_next && g.face != g_prev)?;
+            pts[DIAGONAL_SLOTS[k]] = g.opposite;
         }
         Some(PatchPoints {
             vertices: pts,
             boundary,
         })
+    }
+}
+
+/// The vertex next to `c` in `face` (where `c` is at `i`) that is not `d`.
+fn other_neighbour(face: &[u32], i: usize, d: u32) -> u32 {
+    let (next, prev) = neighbours(face, i);
+    if next == d {
+        prev
+    } else {
+        next
     }
 }

@@ -68,6 +68,8 @@ pub struct Neighbourhood {
     face_indices: Vec<u32>,
     vf_offsets: Vec<u32>,
     vf_faces: Vec<u32>,
+    /// Beside `vf_faces`: where the vertex is in each of its faces.
+    vf_locals: Vec<u32>,
     /// Crease tags as ((smaller, larger) vertex index, sharpness), sorted by key, one per
     /// key; absent = 0. A sorted list, not a hash map: fragments hold a handful of tags and
     /// are built by the hundred thousand.
@@ -232,12 +234,15 @@ impl Neighbourhood {
         }
         let mut fill = vf_offsets.clone();
         let mut vf_faces = vec![0u32; face_indices.len()];
+        let mut vf_locals = vec![0u32; face_indices.len()];
         for f in 0..face_offsets.len() - 1 {
-            for &v in &face_indices[face_offsets[f] as usize..face_offsets[f + 1] as usize] {
+            let face = &face_indices[face_offsets[f] as usize..face_offsets[f + 1] as usize];
+            for (i, &v) in face.iter().enumerate() {
                 let slot = &mut fill[v as usize];
-                // A face that repeats a vertex is listed once per occurrence; the patch tests
-                // treat such vertices as irregular anyway.
+                // A face that repeats a vertex is listed once per occurrence, the occurrences
+                // next to each other; the patch tests treat such vertices as irregular.
                 vf_faces[*slot as usize] = f as u32;
+                vf_locals[*slot as usize] = i as u32;
                 *slot += 1;
             }
         }
@@ -256,6 +261,7 @@ impl Neighbourhood {
             face_indices,
             vf_offsets,
             vf_faces,
+            vf_locals,
             edge_tags,
             tag_starts,
             vertex_tags,
@@ -293,6 +299,14 @@ impl Neighbourhood {
     #[inline]
     pub fn vertex_faces(&self, v: u32) -> &[u32] {
         &self.vf_faces
+            [self.vf_offsets[v as usize] as usize..self.vf_offsets[v as usize + 1] as usize]
+    }
+
+    /// For each face of [`Neighbourhood::vertex_faces`], the position of `v` in it (each
+    /// occurrence of `v` in a face that repeats it, in order).
+    #[inline]
+    pub fn vertex_face_locals(&self, v: u32) -> &[u32] {
+        &self.vf_locals
             [self.vf_offsets[v as usize] as usize..self.vf_offsets[v as usize + 1] as usize]
     }
 

@@ -235,21 +235,33 @@ impl PointProgram {
                 }
             }
         }
+        // Compacted in place: a kept point and its terms move to a place at or before
+        // their own, and it reads only earlier points, renumbered before it.
         let mut renumber: Vec<u32> = (0..nc as u32).collect();
         renumber.resize(np, u32::MAX);
-        let mut kept = PointProgram::new(nc);
+        let (mut rows, mut terms) = (0, 0);
         for p in nc..np {
             if !needed[p] {
                 continue;
             }
             let k = p - nc;
             let (a, b) = (self.offsets[k] as usize, self.offsets[k + 1] as usize);
-            let terms = self.sources[a..b]
-                .iter()
-                .zip(&self.weights[a..b])
-                .map(|(&s, &w)| (renumber[s as usize], w));
-            renumber[p] = kept.push(terms);
+            for j in a..b {
+                self.sources[terms] = renumber[self.sources[j] as usize];
+                self.weights[terms] = self.weights[j];
+                terms += 1;
+            }
+            // Row `k`'s start is read above before row `rows` (at most `k`) ends here.
+            self.offsets[rows + 1] = terms as u32;
+            renumber[p] = (nc + rows) as u32;
+            rows += 1;
         }
+        self.offsets.truncate(rows + 1);
+        self.sources.truncate(terms);
+        self.weights.truncate(terms);
+        self.offsets.shrink_to_fit();
+        self.sources.shrink_to_fit();
+        self.weights.shrink_to_fit();
         for list in roots.iter_mut() {
             for p in list.iter_mut() {
                 if *p != u32::MAX {
@@ -257,6 +269,5 @@ impl PointProgram {
                 }
             }
         }
-        *self = kept;
     }
 }

@@ -14,6 +14,7 @@
 //! when the estimate is above the budget.
 
 use std::fmt;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 
 use crate::error::{Error, Result};
@@ -44,6 +45,33 @@ pub struct Control {
     end: f64,
     /// Threads the work may use (0: all cores); results do not depend on it.
     threads: usize,
+}
+
+/// Polling shared by the ranges of one piece of work split over threads
+/// ([`crate::eval::parallel`]): the first range, on the calling thread, reports to the
+/// caller's [`Control`] (callbacks come on the thread that made the call) and records a
+/// cancel; the other ranges see it at their next poll and stop too. A split joins its
+/// ranges' results in order, so the first range's error is the one returned.
+#[derive(Default)]
+pub(crate) struct SplitPoll {
+    cancelled: AtomicBool,
+}
+
+impl SplitPoll {
+    /// Poll before step `i` of `n` of a range: `reporter` is the control on the first range
+    /// and `None` on the others. Errors: [`Error::Cancelled`] from the control, or on the
+    /// other ranges once the first has been cancelled.
+    pub(crate) fn step(&self, reporter: Option<&Control>, i: usize, n: usize) -> Result<()> {
+        match reporter {
+            Some(control) => control
+                .step(i, n)
+                .inspect_err(|_| self.cancelled.store(true, Ordering::Relaxed)),
+            None if self.cancelled.load(Ordering::Relaxed) => {
+                Err(Error::Cancelled("cancelled on the calling thread".into()))
+            }
+            None => Ok(()),
+        }
+    }
 }
 
 /// Most progress reports a loop of `n` steps makes through [`Control::step`].

@@ -25,7 +25,6 @@
 //! while evaluating and `Sync`, so many threads may evaluate at once.
 
 use glam::DVec3;
-use std::sync::atomic::AtomicBool;
 
 use super::bspline::BicubicPatch;
 use super::domain::Domain;
@@ -34,7 +33,7 @@ use super::patch_topology::Neighbourhood;
 use super::points::PointProgram;
 use super::ptex::PtexFaces;
 use super::sample::LimitSample;
-use crate::control::Control;
+use crate::control::{Control, SplitPoll};
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
@@ -187,11 +186,11 @@ impl Evaluator {
         let ptex = PtexFaces::new(mesh)?;
         let global = Neighbourhood::from_mesh(mesh, options);
         let no_surface = faces_without_surface(mesh, options);
-        let cancelled = AtomicBool::new(false);
+        let split = SplitPoll::default();
         let parts = super::parallel::map_ranges(mesh.num_faces(), threads, |faces| {
             let mut b = Builder::new(options, mesh.num_vertices());
             let reporter = (faces.start == 0).then_some(progress);
-            b.faces(mesh, &global, &no_surface, faces, reporter, &cancelled)?;
+            b.faces(mesh, &global, &no_surface, faces, reporter, &split)?;
             Ok(b)
         });
         let mut parts = parts.into_iter();

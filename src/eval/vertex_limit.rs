@@ -36,9 +36,7 @@
 //! first face has a smooth edge at the vertex, the tangent masks are OpenSubdiv's, which are
 //! approximate there.
 
-use std::sync::atomic::{AtomicBool, Ordering};
-
-use crate::control::Control;
+use crate::control::{Control, SplitPoll};
 use crate::error::Result;
 use crate::mesh::Mesh;
 use crate::options::SubdivOptions;
@@ -84,19 +82,17 @@ pub(crate) fn limit_stencils_with(
     let level = Level::from_mesh_polled(mesh, options, &control.stage(0.0, 0.1))?;
     let surface = vertices_with_surface_in(&level);
     let control = &control.stage(0.1, 1.0);
-    let cancelled = AtomicBool::new(false);
+    let poll = SplitPoll::default();
     let parts = super::parallel::map_ranges(mesh.num_vertices(), control.threads(), |range| {
         let mut table = StencilTable::new();
         let mut row = Vec::new();
-        let (first, len) = (range.start == 0, range.len());
+        let (reporter, start, len) = (
+            (range.start == 0).then_some(control),
+            range.start,
+            range.len(),
+        );
         for v in range {
-            if first {
-                control
-                    .step(v, len)
-                    .inspect_err(|_| cancelled.store(true, Ordering::Relaxed))?;
-            } else if cancelled.load(Ordering::Relaxed) {
-                break; // the first range's error is the one returned
-            }
+            poll.step(reporter, v - start, len)?;
             if !surface[v] {
                 table.push_row([]);
                 continue;

@@ -1,9 +1,7 @@
 //! One pass of refinement over the child components of one kind, split over threads:
 //! contiguous ranges of indices, one per thread ([`crate::eval::parallel::fill_ranges`]).
 
-use std::sync::atomic::{AtomicBool, Ordering};
-
-use crate::control::Control;
+use crate::control::{Control, SplitPoll};
 use crate::error::Result;
 use crate::eval::parallel::fill_ranges;
 
@@ -19,18 +17,12 @@ pub(super) fn fill_pass<T: Send, S: Default>(
     control: &Control,
     item: impl Fn(&mut S, usize) -> T + Sync,
 ) -> Result<()> {
-    let cancelled = AtomicBool::new(false);
+    let poll = SplitPoll::default();
     let ranges = fill_ranges(out, control.threads(), |range, part| {
-        let (first, len) = (range.start == 0, range.len());
+        let (reporter, len) = ((range.start == 0).then_some(control), range.len());
         let mut scratch = S::default();
         for (k, (slot, i)) in part.iter_mut().zip(range).enumerate() {
-            if first {
-                control
-                    .step(k, len)
-                    .inspect_err(|_| cancelled.store(true, Ordering::Relaxed))?;
-            } else if cancelled.load(Ordering::Relaxed) {
-                break; // the first range's error is the one returned
-            }
+            poll.step(reporter, k, len)?;
             *slot = item(&mut scratch, i);
         }
         Ok(())

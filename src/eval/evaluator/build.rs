@@ -3,11 +3,10 @@
 //! one pass over all faces gives.
 
 use std::ops::Range;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::{DeepFragment, Node, CACHE_DEPTH, DEGENERATE_BUDGET, DEGENERATE_DEPTH};
-use crate::control::Control;
-use crate::error::{Error, Result};
+use crate::control::{Control, SplitPoll};
+use crate::error::Result;
 use crate::eval::patch_regular::{regular_patch_points, PatchPoints, PatchTest, NO_POINT};
 use crate::eval::patch_topology::{Neighbourhood, Remap};
 use crate::eval::points::PointProgram;
@@ -73,8 +72,8 @@ impl<'a> Builder<'a> {
 
     /// The quadtrees of control faces `faces` of `mesh` (`global`: its neighbourhood
     /// structure; `no_surface`: the faces without limit surface), appended. `progress` (the
-    /// first range's builder only) is polled at every face of every level, and a cancel
-    /// there raises `cancelled`, which the other ranges poll instead.
+    /// first range's builder only) is polled at every face of every level through `split`, which
+    /// stops the other ranges after a cancel there.
     ///
     /// One sparse refinement serves every face of the range (as Far's adaptive refinement):
     /// level by level, the faces that are not regular patches are refined together with
@@ -82,7 +81,7 @@ impl<'a> Builder<'a> {
     /// needs to get their children and their children's neighbourhoods right), so a point
     /// shared by neighbouring faces is computed and recorded once.
     ///
-    /// Errors: those of the refinement of an irregular neighbourhood; [`Error::Cancelled`].
+    /// Errors: those of the refinement of an irregular neighbourhood; [`crate::Error::Cancelled`].
     pub fn faces(
         &mut self,
         mesh: &Mesh,
@@ -90,22 +89,13 @@ impl<'a> Builder<'a> {
         no_surface: &[bool],
         faces: Range<usize>,
         progress: Option<&Control>,
-        cancelled: &AtomicBool,
+        split: &SplitPoll,
     ) -> Result<()> {
         let levels = CACHE_DEPTH as f64 + 2.0;
         let poll = |level: u32, i: usize, n: usize| -> Result<()> {
-            if let Some(p) = progress {
-                let l = f64::from(level);
-                p.stage(l / levels, (l + 1.0) / levels)
-                    .step(i, n)
-                    .inspect_err(|_| cancelled.store(true, Ordering::Relaxed))
-            } else if cancelled.load(Ordering::Relaxed) {
-                Err(Error::Cancelled(
-                    "cancelled with the evaluator build".into(),
-                ))
-            } else {
-                Ok(())
-            }
+            let l = f64::from(level);
+            let stage = progress.map(|p| p.stage(l / levels, (l + 1.0) / levels));
+            split.step(stage.as_ref(), i, n)
         };
         let repeats: Vec<bool> = (0..mesh.num_faces() as u32)
             .map(|f| repeats_a_vertex(global.face(f)))

@@ -2,7 +2,6 @@
 //! of indices, one per thread, joined in order (scoped standard threads, no pool).
 
 use std::ops::Range;
-use std::sync::Mutex;
 
 /// Fewest items worth a thread: below this a batch runs on the calling thread.
 const MIN_ITEMS_PER_THREAD: usize = 1024;
@@ -46,33 +45,39 @@ pub(crate) fn fill_ranges<T: Send, R: Send>(
     threads: usize,
     f: impl Fn(Range<usize>, &mut [T]) -> R + Sync,
 ) -> Vec<R> {
-    let ranges = ranges(out.len(), threads);
     let mut rest = out;
-    // Each part behind a lock of its own, taken once by the thread of its range.
-    let parts: Vec<Mutex<Option<&mut [T]>>> = ranges
-        .iter()
+    let parts: Vec<(Range<usize>, &mut [T])> = ranges(rest.len(), threads)
+        .into_iter()
         .map(|r| {
             let (part, tail) = std::mem::take(&mut rest).split_at_mut(r.len());
             rest = tail;
-            Mutex::new(Some(part))
+            (r, part)
         })
         .collect();
-    on_threads(ranges.len(), |t| {
-        let part = parts[t].lock().ok().and_then(|mut p| p.take());
-        f(ranges[t].clone(), part.expect("each part is taken once"))
-    })
+    each_on_threads(parts, |(r, part)| f(r, part))
 }
 
-/// `f(t)` for every `t` in `0..threads`, in order, each on its own thread (at least one).
-/// `f(0)` runs on the calling thread: it is the one that reports progress, and the C API
-/// promises callbacks on the thread that made the call. A panic on any thread resumes here.
+/// `f(t)` for every `t` in `0..threads`, in order, each on its own thread (at least one):
+/// [`each_on_threads`] over the thread numbers.
 pub(crate) fn on_threads<T: Send>(threads: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
+    each_on_threads((0..threads.max(1)).collect(), f)
+}
+
+/// `f(item)` for every item, each on its own thread, the results in order. The first item
+/// runs on the calling thread: it is the one that reports progress, and the C API promises
+/// callbacks on the thread that made the call. A panic on any thread resumes here.
+pub(crate) fn each_on_threads<T: Send, R: Send>(
+    items: Vec<T>,
+    f: impl Fn(T) -> R + Sync,
+) -> Vec<R> {
     let f = &f;
+    let mut items = items.into_iter();
+    let Some(first) = items.next() else {
+        return Vec::new();
+    };
     std::thread::scope(|scope| {
-        let handles: Vec<_> = (1..threads.max(1))
-            .map(|t| scope.spawn(move || f(t)))
-            .collect();
-        let mut out = vec![f(0)];
+        let handles: Vec<_> = items.map(|item| scope.spawn(move || f(item))).collect();
+        let mut out = vec![f(first)];
         out.extend(
             handles
                 .into_iter()
@@ -80,23 +85,6 @@ pub(crate) fn on_threads<T: Send>(threads: usize, f: impl Fn(usize) -> T + Sync)
         );
         out
     })
-}
-
-/// `f(item)` for every item, each on its own thread (the first on the calling thread): the
-/// pieces of a batch that [`map_ranges`] split, with what each writes to.
-pub(crate) fn each_on_threads<T: Send>(items: Vec<T>, f: impl Fn(T) + Sync) {
-    let f = &f;
-    let mut items = items.into_iter();
-    let Some(first) = items.next() else {
-        return;
-    };
-    std::thread::scope(|scope| {
-        let handles: Vec<_> = items.map(|item| scope.spawn(move || f(item))).collect();
-        f(first);
-        for h in handles {
-            h.join().unwrap_or_else(|p| std::panic::resume_unwind(p));
-        }
-    });
 }
 
 /// `f(i)` for every `i` in `0..n`, in order, on up to `threads` threads (0: all cores). Each

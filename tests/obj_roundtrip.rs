@@ -4,17 +4,19 @@
 
 #[path = "support/osd_shapes.rs"]
 mod osd_shapes;
+#[path = "support/random_mesh.rs"]
+mod random_mesh;
 
 use std::path::Path;
 
-use glam::DVec3;
 use profsubd::io::obj::{parse_obj, read_obj_file, to_obj_string};
-use profsubd::options::{BoundaryInterpolation, CreaseMethod, PartialOptions};
-use profsubd::{Corner, Crease, Mesh, MeshParts};
+use profsubd::options::{BoundaryInterpolation, CreaseMethod};
+use profsubd::Mesh;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use osd_shapes::{index, shapes_dir};
+use random_mesh::RandomGrid;
 
 /// Every bit of a mesh: positions and sharpness as raw bits, the rest as is.
 fn assert_bit_identical(a: &Mesh, b: &Mesh, what: &str) {
@@ -122,66 +124,30 @@ fn osd_shapes_report_exactly_their_ignored_tags() {
     );
 }
 
-/// A random grid of quads and triangles with random tags and awkward coordinates.
+/// A random grid of at most 7 by 7 quads and triangles with coordinates in ±1000, a fifth of
+/// them awkward ([`random_mesh::AWKWARD`]), and many tags: creases on the cells' bottom edges
+/// (sharpness up to 12), corners (up to 10), holes, boundary untagged, none or edge.
 fn random_mesh(rng: &mut ChaCha8Rng) -> Mesh {
-    let (nx, ny) = (rng.random_range(1..8u32), rng.random_range(1..8u32));
-    let awkward = [0.0, -0.0, 1e-300, 5e-324, 1e300, 0.1, 1.0 / 3.0, -2.5e-8];
-    let positions = (0..(nx + 1) * (ny + 1))
-        .map(|_| {
-            DVec3::from_array([0; 3].map(|_| {
-                if rng.random_bool(0.2) {
-                    awkward[rng.random_range(0..awkward.len())]
-                } else {
-                    rng.random_range(-1e3..1e3)
-                }
-            }))
-        })
-        .collect();
-    let mut parts = MeshParts {
-        positions,
-        ..Default::default()
-    };
-    let id = |i: u32, j: u32| j * (nx + 1) + i;
-    for j in 0..ny {
-        for i in 0..nx {
-            let q = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)];
-            if rng.random_bool(0.3) {
-                parts.face_sizes.extend([3, 3]);
-                parts
-                    .face_indices
-                    .extend([q[0], q[1], q[2], q[0], q[2], q[3]]);
-            } else {
-                parts.face_sizes.push(4);
-                parts.face_indices.extend(q);
-            }
-            if rng.random_bool(0.3) {
-                parts.creases.push(Crease {
-                    vertices: [q[0], q[1]],
-                    sharpness: rng.random_range(0.0..12.0f32),
-                });
-            }
-        }
-    }
-    for v in 0..parts.positions.len() as u32 {
-        if rng.random_bool(0.1) {
-            parts.corners.push(Corner {
-                vertex: v,
-                sharpness: rng.random::<f32>() * 10.0,
-            });
-        }
-    }
-    let nf = parts.face_sizes.len() as u32;
-    parts.holes = (0..nf).filter(|_| rng.random_bool(0.1)).collect();
-    parts.options = PartialOptions {
-        boundary: [
+    RandomGrid {
+        nx: rng.random_range(1..8),
+        ny: rng.random_range(1..8),
+        span: 1e3,
+        awkward: 0.2,
+        hexagons: 0.0,
+        triangles: 0.3,
+        creases: 0.3,
+        crease_to: 1,
+        max_crease: 12.0,
+        corners: 0.1,
+        max_corner: 10.0,
+        holes: 0.1,
+        boundaries: [
             None,
             Some(BoundaryInterpolation::None),
             Some(BoundaryInterpolation::EdgeOnly),
-        ][rng.random_range(0..3)],
-        crease_method: rng.random_bool(0.5).then_some(CreaseMethod::Chaikin),
-        triangles: None,
-    };
-    Mesh::from_parts(parts).unwrap()
+        ],
+    }
+    .mesh(rng)
 }
 
 #[test]

@@ -8,16 +8,15 @@
 #[path = "support/osd_shapes.rs"]
 #[allow(dead_code)] // the shapes folder only, not its index
 mod osd_shapes;
+#[path = "support/random_mesh.rs"]
+mod random_mesh;
 
-use glam::DVec3;
 use profsubd::io::obj::read_obj_file;
 use profsubd::refine::{refine_uniform_with, VertexOrder};
-use profsubd::{
-    BoundaryInterpolation, Control, Corner, Crease, CreaseMethod, Mesh, MeshParts, PartialOptions,
-    SubdivOptions,
-};
-use rand::{Rng, SeedableRng};
+use profsubd::{BoundaryInterpolation, Control, Mesh, MeshParts, SubdivOptions};
+use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+use random_mesh::RandomGrid;
 
 /// Points a thread needs before the work splits (`eval::parallel`'s threshold).
 const MIN_ITEMS_PER_THREAD: usize = 1024;
@@ -94,68 +93,30 @@ fn osd_shapes_refine_the_same_on_any_number_of_threads() {
     }
 }
 
-/// A `n` by `n` grid with random positions, some quads split into triangles or merged into
-/// hexagons, random creases, corners and holes.
+/// A `n` by `n` grid with coordinates in ±10, about a tenth of the cell pairs merged into
+/// hexagons, a fifth of the quads split into triangles, creases on a fifth of the cells' left
+/// edges (sharpness below 4), corners (below 3) and holes; boundary tags other than untagged.
 fn random_mesh(rng: &mut ChaCha8Rng, n: u32) -> Mesh {
-    let positions = (0..(n + 1) * (n + 1))
-        .map(|_| DVec3::from_array([0; 3].map(|_| rng.random_range(-10.0..10.0))))
-        .collect();
-    let mut parts = MeshParts {
-        positions,
-        ..Default::default()
-    };
-    let id = |i: u32, j: u32| j * (n + 1) + i;
-    for j in 0..n {
-        let mut i = 0;
-        while i < n {
-            let q = [id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)];
-            if i + 1 < n && rng.random_bool(0.1) {
-                let h = [q[0], q[1], id(i + 2, j), id(i + 2, j + 1), q[2], q[3]];
-                parts.face_sizes.push(6);
-                parts.face_indices.extend(h);
-                i += 2;
-                continue;
-            }
-            if rng.random_bool(0.2) {
-                parts.face_sizes.extend([3, 3]);
-                parts
-                    .face_indices
-                    .extend([q[0], q[1], q[2], q[0], q[2], q[3]]);
-            } else {
-                parts.face_sizes.push(4);
-                parts.face_indices.extend(q);
-            }
-            if rng.random_bool(0.2) {
-                parts.creases.push(Crease {
-                    vertices: [q[0], q[3]],
-                    sharpness: rng.random_range(0.0..4.0f32),
-                });
-            }
-            i += 1;
-        }
+    RandomGrid {
+        nx: n,
+        ny: n,
+        span: 10.0,
+        awkward: 0.0,
+        hexagons: 0.1,
+        triangles: 0.2,
+        creases: 0.2,
+        crease_to: 3,
+        max_crease: 4.0,
+        corners: 0.05,
+        max_corner: 3.0,
+        holes: 0.03,
+        boundaries: [
+            Some(BoundaryInterpolation::None),
+            Some(BoundaryInterpolation::EdgeOnly),
+            Some(BoundaryInterpolation::EdgeAndCorner),
+        ],
     }
-    for v in 0..parts.positions.len() as u32 {
-        if rng.random_bool(0.05) {
-            parts.corners.push(Corner {
-                vertex: v,
-                sharpness: rng.random::<f32>() * 3.0,
-            });
-        }
-    }
-    let nf = parts.face_sizes.len() as u32;
-    parts.holes = (0..nf).filter(|_| rng.random_bool(0.03)).collect();
-    parts.options = PartialOptions {
-        boundary: Some(
-            [
-                BoundaryInterpolation::None,
-                BoundaryInterpolation::EdgeOnly,
-                BoundaryInterpolation::EdgeAndCorner,
-            ][rng.random_range(0..3)],
-        ),
-        crease_method: rng.random_bool(0.5).then_some(CreaseMethod::Chaikin),
-        triangles: None,
-    };
-    Mesh::from_parts(parts).unwrap()
+    .mesh(rng)
 }
 
 #[test]

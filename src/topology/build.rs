@@ -90,14 +90,15 @@ impl Level {
     }
 
     /// `Vtr::Level::orderVertexFacesAndEdges`: the faces and edges around `v` in
-    /// counter-clockwise order into `faces` and `edges` (cleared first), or `None` if they do
-    /// not form a single fan.
+    /// counter-clockwise order into `faces` and `edges`, and where the walk met `v` in each
+    /// face into `locals` (all cleared first), or `None` if they do not form a single fan.
     fn ordered_faces_and_edges(
         &self,
         v: usize,
         ranks: Option<&[u32]>,
         faces: &mut Vec<u32>,
         edges: &mut Vec<u32>,
+        locals: &mut Vec<u32>,
     ) -> Option<()> {
         let v_edges = self.vertex_edges(v);
         let v_faces = self.vertex_faces(v);
@@ -132,8 +133,10 @@ impl Level {
         }
         faces.clear();
         edges.clear();
+        locals.clear();
         faces.push(f_start);
         edges.push(e_start);
+        locals.push(fv_start as u32);
         let e_first = e_start;
         while edges.len() < ec {
             let f_edges = self.face_edges(f_start as usize);
@@ -155,17 +158,16 @@ impl Level {
                 f_start = if ef[0] == f_start { ef[1] } else { ef[0] };
                 fv_start = pos(self.face_edges(f_start as usize), e_next)?;
                 faces.push(f_start);
+                locals.push(fv_start as u32);
             }
             e_start = e_next;
         }
         Some(())
     }
 
-    /// `Vtr::Level::populateLocalIndices`.
-    fn populate_local_indices(&mut self) {
-        let vf_locals = positions_in_parents(&self.vert_face_offsets, &self.vert_faces, |f| {
-            self.face_vertices(f)
-        });
+    /// The vertex-edge part of `Vtr::Level::populateLocalIndices` (the vertex-face and
+    /// edge-face local indices are filled as those relations are built).
+    fn populate_vertex_edge_locals(&mut self) {
         let mut ve_locals = vec![0u32; self.vert_edges.len()];
         for v in 0..self.num_vertices() {
             let r = self.vert_edge_offsets[v] as usize..self.vert_edge_offsets[v + 1] as usize;
@@ -180,12 +182,7 @@ impl Level {
                 };
             }
         }
-        let ef_locals = positions_in_parents(&self.edge_face_offsets, &self.edge_faces, |f| {
-            self.face_edges(f)
-        });
-        self.vert_face_locals = vf_locals;
         self.vert_edge_locals = ve_locals;
-        self.edge_face_locals = ef_locals;
     }
 
     /// Mesh tags, then Far's boundary and non-manifold sharpening, holes and vertex rules.
@@ -317,6 +314,10 @@ fn topology_from_face_vertices(
     }
     let vert_face_offsets = offsets_of(occurrences.iter().copied());
     let mut vert_faces = vec![0u32; nfv];
+    // Beside `vert_faces`: where the vertex is in each face, in face order (a face that
+    // repeats the vertex gives its positions in order, as `positions_in_row` does).
+    let mut vert_face_locals = vec![0u32; nfv];
+    let mut repeats = false;
     let mut vf_fill: Vec<u32> = vert_face_offsets[..nv].to_vec();
     // Vertex-edge rows with room for 2 edges per face-vertex; `ve_len` used so far.
     let mut ve_room = vec![0u32; 2 * nfv];
@@ -375,7 +376,10 @@ fn topology_from_face_vertices(
             edge_num_faces[e as usize] += 1;
             edge_last_face[e as usize] = f as u32;
             let slot = &mut vf_fill[v0 as usize];
+            repeats |= *slot > vert_face_offsets[v0 as usize]
+                && vert_faces[*slot as usize - 1] == f as u32;
             vert_faces[*slot as usize] = f as u32;
+            vert_face_locals[*slot as usize] = i as u32;
             *slot += 1;
             face_edges[start + i] = e;
         }
@@ -383,11 +387,16 @@ fn topology_from_face_vertices(
     let ne = edge_verts.len();
     let edge_face_offsets = offsets_of(edge_num_faces.iter().copied());
     let mut edge_faces = vec![0u32; edge_face_offsets[ne] as usize];
+    // Beside `edge_faces`: where the edge is in each face (positions in order for a face
+    // that uses the edge twice, as `positions_in_row` gives them).
+    let mut edge_face_locals = vec![0u32; edge_face_offsets[ne] as usize];
     let mut ef_fill: Vec<u32> = edge_face_offsets[..ne].to_vec();
     for f in 0..nf {
-        for &e in &face_edges[face_offsets[f] as usize..face_offsets[f + 1] as usize] {
+        let edges = &face_edges[face_offsets[f] as usize..face_offsets[f + 1] as usize];
+        for (i, &e) in edges.iter().enumerate() {
             let slot = &mut ef_fill[e as usize];
             edge_faces[*slot as usize] = f as u32;
+            edge_face_locals[*slot as usize] = i as u32;
             *slot += 1;
         }
     }
@@ -415,12 +424,12 @@ fn topology_from_face_vertices(
         edge_verts,
         edge_face_offsets,
         edge_faces,
-        edge_face_locals: Vec::new(),
+        edge_face_locals,
         edge_non_manifold,
         edge_sharpness: vec![0.0; ne],
         vert_face_offsets,
         vert_faces,
-        vert_face_locals: Vec::new(),
+        vert_face_locals,
         vert_edge_offsets,
         vert_edges,
         vert_edge_locals: Vec::new(),
@@ -428,18 +437,28 @@ fn topology_from_face_vertices(
         vert_sharpness: vec![0.0; nv],
         vert_rules: Vec::new(),
     };
-    let (mut faces, mut edges) = (Vec::new(), Vec::new());
+    let (mut faces, mut edges, mut locals) = (Vec::new(), Vec::new(), Vec::new());
     let vertices_pass = control.stage(0.5, 0.8);
     for v in 0..nv {
         vertices_pass.step(v, nv)?;
         if level.vert_non_manifold[v] {
             continue;
         }
-        match level.ordered_faces_and_edges(v, ranks, &mut faces, &mut edges) {
+        match level.ordered_faces_and_edges(v, ranks, &mut faces, &mut edges, &mut locals) {
             Some(()) => {
                 let fr =
                     level.vert_face_offsets[v] as usize..level.vert_face_offsets[v + 1] as usize;
-                level.vert_faces[fr].copy_from_slice(&faces);
+                level.vert_faces[fr.clone()].copy_from_slice(&faces);
+                // Where the walk met `v` is its position in each face unless a face repeats
+                // a vertex (then the search's convention applies).
+                let met_v = |(&f, &i): (&u32, &u32)| {
+                    level.face_verts[level.face_offsets[f as usize] as usize + i as usize]
+                        == v as u32
+                };
+                if repeats || !faces.iter().zip(&locals).all(met_v) {
+                    positions_in_row(v as u32, &faces, &mut locals, |f| level.face_vertices(f));
+                }
+                level.vert_face_locals[fr].copy_from_slice(&locals);
                 let er =
                     level.vert_edge_offsets[v] as usize..level.vert_edge_offsets[v + 1] as usize;
                 level.vert_edges[er].copy_from_slice(&edges);
@@ -448,36 +467,33 @@ fn topology_from_face_vertices(
         }
     }
     control.report(0.8)?;
-    level.populate_local_indices();
+    level.populate_vertex_edge_locals();
     Ok(level)
 }
 
-/// For each component `c` (rows of `offsets`/`members`) and each face `f` listed for it, the
-/// position of `c` in `items(f)`. A face listed twice in a row uses the component twice: the
-/// search continues past the previous position.
-fn positions_in_parents<'a>(
-    offsets: &[u32],
-    members: &[u32],
+/// For each face `f` of `faces` (the faces listed for component `c`), the position of `c`
+/// in `items(f)`, into `locals` (replaced). A face listed twice in a row uses the component
+/// twice: the search continues past the previous position.
+fn positions_in_row<'a>(
+    c: u32,
+    faces: &[u32],
+    locals: &mut Vec<u32>,
     items: impl Fn(usize) -> &'a [u32],
-) -> Vec<u32> {
-    let mut locals = vec![0u32; members.len()];
-    for c in 0..offsets.len() - 1 {
-        let mut last: Option<u32> = None;
-        for i in offsets[c] as usize..offsets[c + 1] as usize {
-            let f = members[i];
-            let start = if last == Some(f) {
-                locals[i - 1] as usize + 1
-            } else {
-                0
-            };
-            let list = items(f as usize);
-            let at = list[start..]
-                .iter()
-                .position(|&x| x as usize == c)
-                .map_or(list.len(), |p| p + start);
-            locals[i] = at as u32;
-            last = Some(f);
-        }
+) {
+    locals.clear();
+    let mut last: Option<u32> = None;
+    for (i, &f) in faces.iter().enumerate() {
+        let start = if last == Some(f) {
+            locals[i - 1] as usize + 1
+        } else {
+            0
+        };
+        let list = items(f as usize);
+        let at = list[start..]
+            .iter()
+            .position(|&x| x == c)
+            .map_or(list.len(), |p| p + start);
+        locals.push(at as u32);
+        last = Some(f);
     }
-    locals
 }

@@ -1101,12 +1101,33 @@ enum profsubd_status profsubd_fitted_get_surface_quality(const struct profsubd_f
  * is more than 90 degrees from its parametric face's mean normal, or a normal that jumps by
  * more than 90 degrees across a cell of the finest sampling lattice; creases and corners,
  * where the normal jumps between faces, are not folds (see the README, "Surface validity").
- * `settings` may be NULL (defaults). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for settings
- * out of range.
+ * `settings` may be NULL (defaults). The work is bounded: at most 2^26 limit evaluations
+ * in all (the base lattices, faces x `samples_per_edge`^2, are checked against it before any
+ * evaluation; the adaptive halving as it samples) and 2^21 samples in one face
+ * (`profsubd_check_folds_with_options` adds progress, cancellation and a memory budget).
+ * Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for settings out of range;
+ * `PROFSUBD_ERROR_LIMIT_EXCEEDED` above those ceilings (the message names the figures and
+ * the face). `*out` is untouched on error.
  */
 enum profsubd_status profsubd_check_folds(const struct profsubd_evaluator *evaluator,
                                           const struct profsubd_fold_settings *settings,
                                           struct profsubd_fold_report **out);
+
+/**
+ * `profsubd_check_folds` with the progress callback and memory budget of `options` (NULL:
+ * neither; its other settings do not apply): the callback is called through the mesh's base
+ * level, at each parametric face and every 16,384 samples inside one, and a non-zero return
+ * stops the check with `PROFSUBD_ERROR_CANCELLED`; the check is refused with
+ * `PROFSUBD_ERROR_LIMIT_EXCEEDED` before any evaluation when its estimated memory (about 64
+ * bytes per face-vertex index of the mesh plus 160 bytes per sample of one face's base
+ * lattice) is above the budget, and when the adaptive halving of one face would pass it.
+ * Errors: those of `profsubd_check_folds`; `PROFSUBD_ERROR_INVALID_HANDLE` for `options`.
+ * `*out` is untouched on error.
+ */
+enum profsubd_status profsubd_check_folds_with_options(const struct profsubd_evaluator *evaluator,
+                                                       const struct profsubd_fold_settings *settings,
+                                                       const struct profsubd_options *options,
+                                                       struct profsubd_fold_report **out);
 
 /**
  * Release a fold report (NULL is a no-op).

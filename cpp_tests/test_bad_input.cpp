@@ -630,6 +630,51 @@ void check_folds(Checker &ck) {
         expect(ck, profsubd_check_folds(ev, &bad[i], &out), PROFSUBD_ERROR_INVALID_ARGUMENT, {words[i]},
                std::string("check_folds with bad settings: ") + words[i]);
     ck.check(out == sentinel, "out untouched on error");
+    // Work above the ceiling of 2^26 evaluations: 100,000 faces at 1025 x 1025, refused from
+    // the counts before any evaluation (a 316 x 316 grid), with and without options.
+    {
+        const uint32_t n = 316;
+        std::vector<double> pos;
+        std::vector<uint32_t> sizes(size_t(n) * n, 4), idx;
+        for (uint32_t j = 0; j <= n; ++j)
+            for (uint32_t i = 0; i <= n; ++i) pos.insert(pos.end(), {double(i), double(j), 0.0});
+        for (uint32_t j = 0; j < n; ++j)
+            for (uint32_t i = 0; i < n; ++i) {
+                uint32_t v = j * (n + 1) + i;
+                idx.insert(idx.end(), {v, v + 1, v + n + 2, v + n + 1});
+            }
+        profsubd_mesh_desc d{};
+        d.struct_size = sizeof d;
+        d.positions = pos.data();
+        d.num_vertices = pos.size() / 3;
+        d.face_sizes = sizes.data();
+        d.num_faces = sizes.size();
+        d.face_indices = idx.data();
+        d.num_face_indices = idx.size();
+        profsubd_mesh *big_raw = nullptr;
+        ck.equal(int(profsubd_mesh_new(&d, &big_raw)), int(PROFSUBD_OK), "316 x 316 grid");
+        MeshPtr big_mesh(big_raw);
+        profsubd_evaluator *big = nullptr;
+        ck.equal(int(profsubd_evaluator_new(big_raw, nullptr, &big)), int(PROFSUBD_OK), "its evaluator");
+        profsubd_fold_settings absurd = {1025, 16, 45.0};
+        expect(ck, profsubd_check_folds(big, &absurd, &out), PROFSUBD_ERROR_LIMIT_EXCEEDED,
+               {"99856 parametric faces at 1025 × 1025 samples", "above the limit of 67108864"},
+               "check_folds above MAX_FOLD_SAMPLES");
+        profsubd_options *o = nullptr;
+        profsubd_options_new(&o);
+        expect(ck, profsubd_check_folds_with_options(big, &absurd, o, &out), PROFSUBD_ERROR_LIMIT_EXCEEDED,
+               {"104911210000"}, "check_folds_with_options above MAX_FOLD_SAMPLES");
+        // A memory budget below one face's base lattice of samples.
+        profsubd_options_set_memory_budget(o, 4096);
+        expect(ck, profsubd_check_folds_with_options(ev, nullptr, o, &out), PROFSUBD_ERROR_LIMIT_EXCEEDED,
+               {"the fold check of 1 parametric faces at 9 × 9 samples", "memory budget of 4096 bytes"},
+               "check_folds_with_options over the memory budget");
+        expect(ck, profsubd_check_folds_with_options(ev, nullptr, reinterpret_cast<profsubd_options *>(ev), &out),
+               PROFSUBD_ERROR_INVALID_HANDLE, {"options"}, "an evaluator passed as options");
+        profsubd_options_free(o);
+        profsubd_evaluator_free(big);
+    }
+    ck.check(out == sentinel, "out untouched on error");
 
     // A flat square does not fold: one face checked, no folded face, worst angle 0.
     ck.equal(int(profsubd_check_folds(ev, nullptr, &out)), int(PROFSUBD_OK), "check_folds");

@@ -1,5 +1,6 @@
 /* Progress, cancellation and the memory budget through the C API (include/profsubd.h only):
- * a revolution (its fit), an evaluator build and a uniform refinement, each
+ * a revolution (its fit), an evaluator build, a uniform refinement and a fold check
+ * (`profsubd_check_folds_with_options`), each
  *  - run to the end: the callback sees 0 first, 1 last, non-decreasing fractions;
  *  - cancelled at the first callback and at 50 %: PROFSUBD_ERROR_CANCELLED, a message, the
  *    output pointer untouched;
@@ -76,10 +77,11 @@ static const double profile[] = {0.0, 0.0, 0.6, 0.0, 0.8, 0.5, 0.4, 1.2, 0.5, 1.
 /* The three kinds of work, each writing one handle through `out`; the latency run adds a
  * partial turn (270 degrees, the profile without its axis point), whose build ends with the
  * fold check. */
-typedef enum { REVOLVE, EVALUATOR, REFINE, REVOLVE_PARTIAL } kind;
-static const char *names[] = {"revolve", "evaluator", "refine", "revolve 270"};
+typedef enum { REVOLVE, EVALUATOR, REFINE, REVOLVE_PARTIAL, FOLDS } kind;
+static const char *names[] = {"revolve", "evaluator", "refine", "revolve 270", "fold check"};
 
 static const struct profsubd_mesh *g_mesh;
+static const struct profsubd_evaluator *g_ev; /* of g_mesh, for the fold check */
 static uint32_t g_level = 3;
 
 static enum profsubd_status run(kind k, const struct profsubd_options *o, void **out) {
@@ -90,6 +92,8 @@ static enum profsubd_status run(kind k, const struct profsubd_options *o, void *
         return profsubd_revolve(profile + 2, 4, o, (struct profsubd_fitted **)out);
     case EVALUATOR:
         return profsubd_evaluator_new(g_mesh, o, (struct profsubd_evaluator **)out);
+    case FOLDS:
+        return profsubd_check_folds_with_options(g_ev, NULL, o, (struct profsubd_fold_report **)out);
     default:
         return profsubd_refine_uniform(g_mesh, o, g_level, (struct profsubd_mesh **)out);
     }
@@ -100,6 +104,7 @@ static void release(kind k, void *h) {
     case REVOLVE:
     case REVOLVE_PARTIAL: profsubd_fitted_free(h); break;
     case EVALUATOR: profsubd_evaluator_free(h); break;
+    case FOLDS: profsubd_fold_report_free(h); break;
     default: profsubd_mesh_free(h); break;
     }
 }
@@ -187,9 +192,12 @@ static void latency(void) {
     CHECK(profsubd_fitted_get_mesh(big, &mesh));
     g_mesh = mesh;
     g_level = 2;
-    printf("revolve: 256 x 512 revolution; evaluator, refine (level 2): of that revolution; "
-           "revolve 270: 128 x 256, 270 degrees\n");
-    for (int k = 0; k < 4; k++) {
+    printf("revolve: 256 x 512 revolution; evaluator, refine (level 2), fold check (defaults): "
+           "of that revolution; revolve 270: 128 x 256, 270 degrees\n");
+    struct profsubd_evaluator *ev = NULL;
+    CHECK(profsubd_evaluator_new(mesh, NULL, &ev));
+    g_ev = ev;
+    for (int k = 0; k < 5; k++) {
         if (k == REVOLVE_PARTIAL) {
             CHECK(profsubd_options_set_samples(o, 128, 256));
             CHECK(profsubd_options_set_revolve_angle(o, 270.0));
@@ -224,6 +232,7 @@ static void latency(void) {
                1e3 * whole, q.calls, 1e3 * q.max_gap);
     }
     printf("(revolution built in %.1f ms)\n", 1e3 * full);
+    profsubd_evaluator_free(ev);
     profsubd_mesh_free(mesh);
     profsubd_fitted_free(big);
     profsubd_options_free(o);
@@ -240,14 +249,19 @@ int main(int argc, char **argv) {
     CHECK(profsubd_revolve(profile, 5, NULL, &vase));
     CHECK(profsubd_fitted_get_mesh(vase, &mesh));
     g_mesh = mesh;
+    struct profsubd_evaluator *ev = NULL;
+    CHECK(profsubd_evaluator_new(mesh, NULL, &ev));
+    g_ev = ev;
     for (int k = 0; k < 3; k++) test_kind((kind)k);
+    test_kind(FOLDS);
+    profsubd_evaluator_free(ev);
     profsubd_mesh_free(mesh);
     profsubd_fitted_free(vase);
     if (failures) {
         fprintf(stderr, "%d failures\n", failures);
         return 1;
     }
-    printf("cancel: revolve, evaluator, refine: full run, cancel at the first callback and at "
+    printf("cancel: revolve, evaluator, refine, fold check: full run, cancel at the first callback and at "
            "50 %%, 1 KiB memory budget\n");
     return 0;
 }

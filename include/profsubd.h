@@ -798,8 +798,9 @@ enum profsubd_status profsubd_options_set_sweep_corners(struct profsubd_options 
 /**
  * Set the progress callback of the work done with `options`: every construction
  * (`profsubd_profile_build`, `profsubd_revolve`, `profsubd_sweep`, ...: the fit and its
- * stages, BiCGSTAB iterations, dense LU columns), `profsubd_evaluator_new` (each face) and
- * `profsubd_refine_uniform` (each level). It is called on the calling thread at the start,
+ * stages, BiCGSTAB iterations, dense LU columns), `profsubd_evaluator_new` (its setup, each
+ * face, its positions), `profsubd_refine_uniform` (each level) and
+ * `profsubd_check_folds_with_options` (each face). It is called on the calling thread at the start,
  * regularly (at most about a thousand times per stage) and at the end of the work; when it
  * returns non-zero the call stops within one step and returns `PROFSUBD_ERROR_CANCELLED`,
  * its outputs untouched and nothing leaked. `callback` NULL removes it. Calls sharing the
@@ -813,7 +814,7 @@ enum profsubd_status profsubd_options_set_progress(struct profsubd_options *opti
 
 /**
  * Set the memory budget of the work done with `options` (constructions, evaluator build,
- * refinement), in bytes; 0 (the default) for none. A call estimates its largest
+ * refinement, `profsubd_check_folds_with_options`), in bytes; 0 (the default) for none. A call estimates its largest
  * allocations from its sizes before making them and returns
  * `PROFSUBD_ERROR_LIMIT_EXCEEDED` when the estimate is above the budget (the message gives
  * both figures).
@@ -1101,12 +1102,33 @@ enum profsubd_status profsubd_fitted_get_surface_quality(const struct profsubd_f
  * is more than 90 degrees from its parametric face's mean normal, or a normal that jumps by
  * more than 90 degrees across a cell of the finest sampling lattice; creases and corners,
  * where the normal jumps between faces, are not folds (see the README, "Surface validity").
- * `settings` may be NULL (defaults). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for settings
- * out of range.
+ * `settings` may be NULL (defaults). The work is bounded: at most 2^26 limit evaluations
+ * in all (the base lattices, faces x `samples_per_edge`^2, are checked against it before any
+ * evaluation; the adaptive halving as it samples) and 2^21 samples in one face
+ * (`profsubd_check_folds_with_options` adds progress, cancellation and a memory budget).
+ * Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for settings out of range;
+ * `PROFSUBD_ERROR_LIMIT_EXCEEDED` above those ceilings (the message names the figures and
+ * the face). `*out` is untouched on error.
  */
 enum profsubd_status profsubd_check_folds(const struct profsubd_evaluator *evaluator,
                                           const struct profsubd_fold_settings *settings,
                                           struct profsubd_fold_report **out);
+
+/**
+ * `profsubd_check_folds` with the progress callback and memory budget of `options` (NULL:
+ * neither; its other settings do not apply): the callback is called through the mesh's base
+ * level, at each parametric face and every 16,384 samples inside one, and a non-zero return
+ * stops the check with `PROFSUBD_ERROR_CANCELLED`; the check is refused with
+ * `PROFSUBD_ERROR_LIMIT_EXCEEDED` before any evaluation when its estimated memory (about 64
+ * bytes per face-vertex index of the mesh plus 160 bytes per sample of one face's base
+ * lattice) is above the budget, and when the adaptive halving of one face would pass it.
+ * Errors: those of `profsubd_check_folds`; `PROFSUBD_ERROR_INVALID_HANDLE` for `options`.
+ * `*out` is untouched on error.
+ */
+enum profsubd_status profsubd_check_folds_with_options(const struct profsubd_evaluator *evaluator,
+                                                       const struct profsubd_fold_settings *settings,
+                                                       const struct profsubd_options *options,
+                                                       struct profsubd_fold_report **out);
 
 /**
  * Release a fold report (NULL is a no-op).

@@ -1,6 +1,7 @@
 //! Progress, cancellation and the memory budget of long work: one [`Control`] value, carried
 //! by [`crate::Settings`] (every construction and its fit) and given to
-//! [`crate::Evaluator::with_control`] and [`crate::refine::refine_uniform_with`].
+//! [`crate::Evaluator::with_control`], [`crate::refine::refine_uniform_with`] and
+//! [`crate::eval::folds::find_folds_with`].
 //!
 //! The work reports the fraction done, in `[0, 1]` and non-decreasing, to the caller's
 //! [`Progress`] at its first step, regularly after (at most about a thousand times per call,

@@ -1,12 +1,13 @@
 //! Progress and cancellation through the Rust API (one [`Control`] for all): every
-//! construction (through `Settings`), the evaluator build and uniform refinement report
-//! fractions from 0 to 1, stop with `Error::Cancelled` at the first callback or at 50 %, and
+//! construction (through `Settings`), the evaluator build, uniform refinement and the fold
+//! check report fractions from 0 to 1, stop with `Error::Cancelled` at the first callback or at 50 %, and
 //! refuse work above a memory budget with `Error::LimitExceeded`. Also the command line:
 //! SIGINT stops a long construction with exit code 130 and no output file.
 
 use std::path::Path;
 use std::sync::{Arc, Mutex};
 
+use profsubd::eval::folds::{find_folds_with, FoldSettings};
 use profsubd::io::obj::read_obj_file;
 use profsubd::refine::{refine_uniform_with, VertexOrder};
 use profsubd::{
@@ -41,6 +42,7 @@ fn works() -> Vec<(&'static str, Work)> {
             .mesh,
     );
     let m2 = mesh.clone();
+    let ev = Evaluator::new(&mesh, &mesh.options().resolve()).unwrap();
     vec![
         (
             "profile",
@@ -87,6 +89,12 @@ fn works() -> Vec<(&'static str, Work)> {
             Box::new(move |c: &Control| {
                 let o: SubdivOptions = m2.options().resolve();
                 refine_uniform_with(&m2, &o, 3, VertexOrder::VerticesFirst, c).map(drop)
+            }),
+        ),
+        (
+            "fold check",
+            Box::new(move |c: &Control| {
+                find_folds_with(&ev, &FoldSettings::default(), c).map(drop)
             }),
         ),
     ]

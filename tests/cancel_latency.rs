@@ -3,6 +3,7 @@
 //! C harness's latency work (`build/cpp_tests/cancel --latency`), with the fractions at both
 //! ends, which name the stage. A measurement, printed, not asserted; ignored by default:
 //! `cargo test --release --test cancel_latency -- --ignored --nocapture`.
+use profsubd::eval::folds::{find_folds_with, FoldSettings};
 use profsubd::refine::{refine_uniform_with, VertexOrder};
 use profsubd::{revolve, Control, Evaluator, RevolveInput, Settings};
 use std::sync::{Arc, Mutex};
@@ -58,6 +59,10 @@ fn where_the_gaps_are() {
     let mesh = big.mesh.clone();
     gaps("evaluator", |c| {
         Evaluator::with_control(&mesh, &mesh.options().resolve(), c).unwrap();
+    });
+    let ev = Evaluator::new(&mesh, &mesh.options().resolve()).unwrap();
+    gaps("fold check", |c| {
+        find_folds_with(&ev, &FoldSettings::default(), c).unwrap();
     });
     gaps("refine 2", |c| {
         refine_uniform_with(

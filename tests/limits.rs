@@ -316,3 +316,122 @@ fn every_construction_refuses_sizes_above_its_ceilings() {
         t.elapsed()
     );
 }
+
+/// The fold check's ceilings: base lattices above `MAX_FOLD_SAMPLES` refused from the counts
+/// before any evaluation or callback (through Rust and C, the output untouched), exactly at
+/// the ceiling accepted (cancelled at its first callback, which comes after the checks), and
+/// one face's adaptive halving stopped at `MAX_FACE_SAMPLES` (the time printed, not asserted).
+#[test]
+fn fold_check_work_above_its_ceilings_is_refused() {
+    use profsubd::eval::folds::{
+        find_folds, find_folds_with, FoldSettings, MAX_FACE_SAMPLES, MAX_FOLD_SAMPLES,
+    };
+    use profsubd::ffi::folds::{profsubd_check_folds, profsubd_fold_settings};
+    use profsubd::Control;
+
+    // 65,536 faces at 1025 x 1025: 6.9e10 evaluations asked.
+    let big = Evaluator::new(&grid(256), &SubdivOptions::default()).unwrap();
+    let absurd = FoldSettings {
+        samples_per_edge: 1025,
+        adaptive_depth: 16,
+        ..FoldSettings::default()
+    };
+    let t = std::time::Instant::now();
+    match find_folds(&big, &absurd) {
+        Err(Error::LimitExceeded(m)) => assert!(
+            m.contains(
+                "65536 parametric faces at 1025 × 1025 samples makes 68853760000 limit evaluations"
+            ) && m.contains(&format!("above the limit of {MAX_FOLD_SAMPLES}")),
+            "{m}"
+        ),
+        other => panic!("{:?}", other.map(|r| r.samples)),
+    }
+    println!(
+        "fold check of 65536 faces at 1025 x 1025 refused in {:?}",
+        t.elapsed()
+    );
+    unsafe {
+        let m = profsubd::ffi::mesh::new_mesh_handle(grid(256));
+        let mut ev = ptr::null_mut();
+        assert_eq!(profsubd_evaluator_new(m, ptr::null(), &mut ev), PROFSUBD_OK);
+        let settings = profsubd_fold_settings {
+            samples_per_edge: 1025,
+            adaptive_depth: 16,
+            refine_turn_deg: 45.0,
+        };
+        let sentinel = 0x5eed as *mut _;
+        let mut out = sentinel;
+        let t = std::time::Instant::now();
+        let s = profsubd_check_folds(ev, &settings, &mut out);
+        println!("the same through C refused in {:?}", t.elapsed());
+        assert_eq!(s, PROFSUBD_ERROR_LIMIT_EXCEEDED);
+        assert_eq!(out, sentinel);
+        assert!(last_error().contains("68853760000"), "{}", last_error());
+        profsubd_evaluator_free(ev);
+        profsubd::ffi::mesh::profsubd_mesh_free(m);
+    }
+
+    // 64 faces: at 1024 x 1024 exactly MAX_FOLD_SAMPLES (accepted: the first callback comes
+    // after the checks and cancels), at 1025 x 1025 above (refused, no callback).
+    const { assert!(64 * 1024 * 1024 == MAX_FOLD_SAMPLES) };
+    let small = Evaluator::new(&grid(8), &SubdivOptions::default()).unwrap();
+    let calls = std::sync::Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    let seen = calls.clone();
+    let cancel_at_once = Control::NONE.with_progress(move |_| {
+        seen.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        true
+    });
+    let at = |n: usize| FoldSettings {
+        samples_per_edge: n,
+        adaptive_depth: 0,
+        ..FoldSettings::default()
+    };
+    assert!(matches!(
+        find_folds_with(&small, &at(1024), &cancel_at_once),
+        Err(Error::Cancelled(_))
+    ));
+    match find_folds_with(&small, &at(1025), &cancel_at_once) {
+        Err(Error::LimitExceeded(m)) => assert!(m.contains("67240000 limit evaluations"), "{m}"),
+        other => panic!("{:?}", other.map(|r| r.samples)),
+    }
+    assert_eq!(calls.load(std::sync::atomic::Ordering::Relaxed), 1);
+
+    // One face refined wherever its normal turns at all: (8 · 2^16 + 1)^2 samples asked of a
+    // curved face, stopped at MAX_FACE_SAMPLES.
+    let curved = Evaluator::new(&paraboloid(4), &SubdivOptions::default()).unwrap();
+    let everywhere = FoldSettings {
+        samples_per_edge: 9,
+        adaptive_depth: 16,
+        refine_turn_deg: 1e-9,
+    };
+    let t = std::time::Instant::now();
+    match find_folds(&curved, &everywhere) {
+        Err(Error::LimitExceeded(m)) => assert!(
+            m.contains(&format!(
+                "parametric face 0 needs more than {MAX_FACE_SAMPLES} samples at 9 × 9 with adaptive depth 16"
+            )),
+            "{m}"
+        ),
+        other => panic!("{:?}", other.map(|r| r.samples)),
+    }
+    println!(
+        "a face's adaptive halving stopped at {MAX_FACE_SAMPLES} samples after {:?}",
+        t.elapsed()
+    );
+}
+
+/// An `n` x `n` grid of quads lifted onto the paraboloid `z = (x² + y²) / n²`: curved
+/// everywhere, its patches regular (cheap to evaluate at any depth).
+fn paraboloid(n: u32) -> Mesh {
+    let mesh = grid(n);
+    let positions = (mesh.positions().iter())
+        .map(|p| glam::DVec3::new(p.x, p.y, (p.x * p.x + p.y * p.y) / f64::from(n * n)))
+        .collect();
+    Mesh::from_parts(MeshParts {
+        positions,
+        face_sizes: mesh.face_sizes().to_vec(),
+        face_indices: mesh.face_indices().to_vec(),
+        ..Default::default()
+    })
+    .unwrap()
+}

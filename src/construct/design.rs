@@ -42,7 +42,7 @@ use glam::{DVec2, DVec3};
 
 use crate::control::Control;
 use crate::error::Result;
-use crate::eval::folds::{find_folds_with, FoldSettings};
+use crate::eval::folds::construction_folds;
 use crate::eval::{Evaluator, LimitSample};
 use crate::mesh::{Mesh, MeshParts};
 
@@ -478,7 +478,7 @@ pub fn surface_report(mesh: &Mesh, design: &DesignLattice) -> Result<SurfaceRepo
 
 /// [`surface_report`] polling `control` at its end fraction (the report follows the fit):
 /// in the evaluator build, at each face of the lattice comparison and of the fold search
-/// ([`find_folds_with`]).
+/// ([`crate::eval::folds::find_folds_with`]).
 ///
 /// Errors: those of [`surface_report`]; [`crate::Error::Cancelled`] from `control`.
 pub fn surface_report_with(
@@ -512,7 +512,7 @@ pub fn surface_report_with(
         limit_energy += bending_energy(&limit, &limit_normals);
         design_energy += bending_energy(want, &design_normals(&normals, &limit_normals));
     }
-    let folds = find_folds_with(&ev, &FoldSettings::default(), control)?;
+    let folds = construction_folds(&ev, control)?;
     Ok(SurfaceReport {
         max_design_distance: max / diagonal,
         mean_design_distance: sum / count.max(1) as f64 / diagonal,

@@ -9,7 +9,7 @@ use crate::construct::design::{DesignLattice, SurfaceReport};
 use crate::construct::settings::Settings;
 use crate::control::Control;
 use crate::error::{Error, Result};
-use crate::eval::folds::{find_folds_with, FoldSettings};
+use crate::eval::folds::construction_folds;
 use crate::eval::Evaluator;
 use crate::fit::{fit_cage, FitOptions, FitReport, FittedCage, Role};
 use crate::mesh::{Mesh, MeshParts};
@@ -119,7 +119,7 @@ impl Fitted {
         // Only on refusal: which faces and where the worst reversal is, for the message.
         let poll = control.stage(1.0, 1.0);
         let ev = Evaluator::with_control(&self.mesh, &self.mesh.options().resolve(), &poll)?;
-        let folds = find_folds_with(&ev, &FoldSettings::default(), control)?;
+        let folds = construction_folds(&ev, control)?;
         let (face, u, v) = folds.worst_at.unwrap_or((0, 0.5, 0.5));
         let p = ev.evaluate(face as u32, u, v)?.position;
         let faces = folds.folded_face_indices();

@@ -137,8 +137,9 @@ impl Evaluator {
     }
 
     /// [`Evaluator::new`] with progress, cancellation and a memory budget: `control` is
-    /// polled at every face of the build (0–95 %) and every thousand or so points of the
-    /// positions' pass (95–100 %), and
+    /// polled through the setup before the first face (the Ptex numbering, the mesh's
+    /// neighbourhood and its base level's passes, at fraction 0), at every face of the build
+    /// (0–95 %) and every thousand or so points of the positions' pass (95–100 %), and
     /// the build is refused before allocating when [`evaluator_bytes`] is above the budget.
     ///
     /// Errors: those of [`Evaluator::new`]; [`Error::Cancelled`] and
@@ -183,9 +184,14 @@ impl Evaluator {
         threads: usize,
         progress: &Control,
     ) -> Result<Evaluator> {
+        // The setup before the first face (tens of milliseconds on a large mesh, mostly the
+        // base level behind `faces_without_surface`) is polled at fraction 0.
+        let setup = progress.stage(0.0, 0.0);
         let ptex = PtexFaces::new(mesh)?;
+        setup.report(0.0)?;
         let global = Neighbourhood::from_mesh(mesh, options);
-        let no_surface = faces_without_surface(mesh, options);
+        setup.report(0.0)?;
+        let no_surface = faces_without_surface(mesh, options, &setup)?;
         let split = SplitPoll::default();
         let parts = super::parallel::map_ranges(mesh.num_faces(), threads, |faces| {
             let mut b = Builder::new(options, mesh.num_vertices());
@@ -627,12 +633,17 @@ fn nearest_corner(s: f64, t: f64) -> usize {
 
 /// Faces with no limit surface: holes, and under boundary interpolation "none" the faces at
 /// a boundary or non-manifold vertex with a boundary edge not tagged infinitely sharp — the
-/// holes of the base [`Level`], which follows Far's rule (see [`super::surface`]).
-fn faces_without_surface(mesh: &Mesh, options: &SubdivOptions) -> Vec<bool> {
-    let level = Level::from_mesh_with_options(mesh, options);
-    (0..mesh.num_faces())
+/// holes of the base [`Level`], which follows Far's rule (see [`super::surface`]). The base
+/// level's passes poll `control`.
+fn faces_without_surface(
+    mesh: &Mesh,
+    options: &SubdivOptions,
+    control: &Control,
+) -> Result<Vec<bool>> {
+    let level = Level::from_mesh_polled(mesh, options, control)?;
+    Ok((0..mesh.num_faces())
         .map(|f| level.is_face_hole(f))
-        .collect()
+        .collect())
 }
 
 mod batch;

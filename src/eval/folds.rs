@@ -66,6 +66,31 @@ const MAX_SAMPLES_PER_EDGE: usize = 1025;
 /// Largest `adaptive_depth` accepted.
 const MAX_ADAPTIVE_DEPTH: usize = 16;
 
+/// Most limit evaluations one [`find_folds`] call makes, base lattices and adaptive halving
+/// together: 2^26. The base lattices (parametric faces with a surface × `samples_per_edge`²)
+/// are checked against it from the counts, before any evaluation; the adaptive halving,
+/// which depends on the surface, counts its samples as it makes them, and the call is
+/// refused when they would pass it (so after at most this many evaluations). What that
+/// takes depends on where the samples fall: about 1 µs each on regular patches, up to
+/// ~40 µs deep next to an extraordinary vertex (a smooth cube's face halved everywhere to
+/// depth 16: 2^21 samples in 79 s on the loaded 2-core machine of 2026-12-02); a caller
+/// that cannot wait polls through [`find_folds_with`].
+pub const MAX_FOLD_SAMPLES: u64 = 1 << 26;
+
+/// Most samples of one parametric face, base lattice and adaptive halving together: 2^21,
+/// twice the largest base lattice (1025²). Each is kept until the face is done (about
+/// [`SAMPLE_BYTES`]), so this bounds the call's memory to about 320 MiB beside the mesh's
+/// base level.
+pub const MAX_FACE_SAMPLES: usize = 1 << 21;
+
+/// Estimated bytes a sample takes while its face is checked (a 64-byte entry of a hash table
+/// between half and seven eighths full), for the memory budget.
+pub const SAMPLE_BYTES: u64 = 160;
+
+/// New samples of one face between two polls inside it (a face of many samples takes
+/// milliseconds).
+const FACE_POLL: usize = 1 << 14;
+
 /// How densely [`find_folds`] samples.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct FoldSettings {
@@ -143,25 +168,150 @@ impl FoldReport {
 /// (the criterion is in the [module documentation](self)).
 ///
 /// Errors: [`Error::InvalidArgument`] for `samples_per_edge` outside `2..=1025`,
-/// `adaptive_depth` above 16 or a `refine_turn_deg` outside `(0, 180]`; errors of the
-/// evaluation ([`Error::NumericalFailure`]).
+/// `adaptive_depth` above 16 or a `refine_turn_deg` outside `(0, 180]`;
+/// [`Error::LimitExceeded`] when the base lattices would take more than
+/// [`MAX_FOLD_SAMPLES`] evaluations (refused before any), or when the adaptive halving
+/// reaches that total or [`MAX_FACE_SAMPLES`] in one face; errors of the evaluation
+/// ([`Error::NumericalFailure`]).
 pub fn find_folds(evaluator: &Evaluator, settings: &FoldSettings) -> Result<FoldReport> {
     find_folds_with(evaluator, settings, &Control::NONE)
 }
 
-/// [`find_folds`] polling `control` at each parametric face (at its end fraction: a
-/// construction's fold check follows its fit).
+/// [`find_folds`] with progress, cancellation and a memory budget: `control` is polled
+/// through the mesh's base level (at fraction 0), at each parametric face (their share of
+/// the faces done) and every 16,384 samples inside one, and at the end (1); the check is
+/// refused before any evaluation or callback when [`fold_check_bytes`] is above the budget,
+/// and when a face's samples would pass it.
 ///
-/// Errors: those of [`find_folds`]; [`Error::Cancelled`] from `control`.
+/// Errors: those of [`find_folds`]; [`Error::Cancelled`] and [`Error::LimitExceeded`] from
+/// `control`.
 pub fn find_folds_with(
     evaluator: &Evaluator,
     settings: &FoldSettings,
     control: &Control,
 ) -> Result<FoldReport> {
-    check_settings(settings)?;
+    check_folds(evaluator, settings, control, MAX_FOLD_SAMPLES)
+}
+
+/// The fold check a construction runs on its own result (default settings): bounded by
+/// the construction's sample ceilings ([`crate::construct::settings::MAX_SAMPLE_PRODUCT`]
+/// faces) rather than by [`MAX_FOLD_SAMPLES`], so that every mesh a construction may build
+/// is checked; per face and under the memory budget as [`find_folds_with`]. Polled at the
+/// end fraction of `control` (the check follows the fit).
+pub(crate) fn construction_folds(evaluator: &Evaluator, control: &Control) -> Result<FoldReport> {
     let poll = control.stage(1.0, 1.0);
+    check_folds(evaluator, &FoldSettings::default(), &poll, u64::MAX)
+}
+
+/// Estimated bytes of a fold check of `evaluator` at `samples_per_edge` (what
+/// [`find_folds_with`] checks against the memory budget): the mesh's base level (about 64
+/// bytes per face-vertex index) and one face's base lattice of samples ([`SAMPLE_BYTES`]
+/// each).
+pub fn fold_check_bytes(evaluator: &Evaluator, samples_per_edge: usize) -> u64 {
+    level_bytes(evaluator) + SAMPLE_BYTES * (samples_per_edge as u64).pow(2)
+}
+
+fn level_bytes(evaluator: &Evaluator) -> u64 {
+    64 * evaluator.mesh().face_indices().len() as u64
+}
+
+/// The ceilings of one call, fixed before its first evaluation, and what their messages say.
+struct Limits<'c> {
+    /// Most evaluations of the call.
+    total: u64,
+    /// Most samples of one face: [`MAX_FACE_SAMPLES`], or fewer under the memory budget.
+    per_face: usize,
+    /// Whether `per_face` comes from the memory budget.
+    budgeted: bool,
+    level_bytes: u64,
+    control: &'c Control,
+    faces: u64,
+    settings: FoldSettings,
+}
+
+impl<'c> Limits<'c> {
+    /// The limits of checking `evaluator` at `settings` with `total` evaluations at most
+    /// under `control`'s memory budget. Errors ([`Error::LimitExceeded`]): the base lattices
+    /// above `total`, or their estimated bytes ([`fold_check_bytes`]) above the budget.
+    fn new(
+        evaluator: &Evaluator,
+        settings: &FoldSettings,
+        control: &'c Control,
+        total: u64,
+    ) -> Result<Limits<'c>> {
+        let nptex = evaluator.num_parametric_faces() as u32;
+        let faces = (0..nptex).filter(|&p| evaluator.has_surface(p)).count() as u64;
+        let n = settings.samples_per_edge;
+        let base = faces.saturating_mul((n as u64).pow(2));
+        if base > total {
+            return Err(Error::LimitExceeded(format!(
+                "the fold check of {faces} parametric faces at {n} × {n} samples makes {base} \
+                 limit evaluations before any adaptive halving, above the limit of {total}"
+            )));
+        }
+        control.check_memory(
+            &format!("the fold check of {faces} parametric faces at {n} × {n} samples"),
+            fold_check_bytes(evaluator, n),
+        )?;
+        let level_bytes = level_bytes(evaluator);
+        // The most samples of one face the budget leaves room for.
+        let by_budget = control.memory_budget().map(|b| {
+            usize::try_from(b.saturating_sub(level_bytes) / SAMPLE_BYTES).unwrap_or(usize::MAX)
+        });
+        Ok(Limits {
+            total,
+            per_face: by_budget.map_or(MAX_FACE_SAMPLES, |b| b.min(MAX_FACE_SAMPLES)),
+            budgeted: by_budget.is_some_and(|b| b < MAX_FACE_SAMPLES),
+            level_bytes,
+            control,
+            faces,
+            settings: *settings,
+        })
+    }
+
+    /// The refusal when `made` evaluations of the call so far, `in_face` of them in
+    /// parametric face `ptex`, leave no room for one more.
+    fn refuse(&self, ptex: u32, made: u64, in_face: usize) -> Error {
+        let n = self.settings.samples_per_edge;
+        let depth = self.settings.adaptive_depth;
+        if made >= self.total {
+            return Error::LimitExceeded(format!(
+                "the fold check reached its limit of {} limit evaluations at parametric face \
+                 {ptex} (its base lattices, {} faces at {n} × {n} samples, take {}; the rest is \
+                 adaptive halving up to depth {depth}): lower adaptive_depth or samples_per_edge",
+                self.total,
+                self.faces,
+                self.faces * (n as u64).pow(2)
+            ));
+        }
+        if self.budgeted {
+            let what = format!("the fold check's samples of parametric face {ptex}");
+            let bytes = self.level_bytes + SAMPLE_BYTES * (in_face as u64 + 1);
+            if let Err(e) = self.control.check_memory(&what, bytes) {
+                return e;
+            }
+        }
+        Error::LimitExceeded(format!(
+            "parametric face {ptex} needs more than {} samples at {n} × {n} with adaptive \
+             depth {depth}, the limit of one face: lower adaptive_depth or samples_per_edge",
+            self.per_face
+        ))
+    }
+}
+
+/// [`find_folds_with`] with `total` evaluations at most.
+fn check_folds(
+    evaluator: &Evaluator,
+    settings: &FoldSettings,
+    control: &Control,
+    total: u64,
+) -> Result<FoldReport> {
+    check_settings(settings)?;
+    let limits = Limits::new(evaluator, settings, control, total)?;
+    let nptex = evaluator.num_parametric_faces();
+    control.report(0.0)?;
     let mesh = evaluator.mesh();
-    let level = Level::from_mesh_with_options(mesh, evaluator.options());
+    let level = Level::from_mesh_polled(mesh, evaluator.options(), &control.stage(0.0, 0.0))?;
     let mut report = FoldReport {
         folded_faces: Vec::new(),
         worst_reversal_deg: 0.0,
@@ -170,9 +320,8 @@ pub fn find_folds_with(
         faces_checked: 0,
         samples: 0,
     };
-    let nptex = evaluator.num_parametric_faces();
     for ptex in 0..nptex as u32 {
-        poll.step(ptex as usize, nptex)?;
+        control.step(ptex as usize, nptex)?;
         if !evaluator.has_surface(ptex) {
             continue;
         }
@@ -180,7 +329,12 @@ pub fn find_folds_with(
             continue;
         };
         let shape = face_shape(&level, mesh.face(base as usize), sub);
-        let face = FaceCheck::run(evaluator, ptex, shape, settings)?;
+        let room = Room {
+            limits: &limits,
+            made: report.samples as u64,
+            fraction: ptex as f64 / nptex as f64,
+        };
+        let face = FaceCheck::run(evaluator, ptex, shape, settings, room)?;
         report.faces_checked += 1;
         report.samples += face.samples;
         report.min_relative_jacobian = report.min_relative_jacobian.min(face.min_rel_jacobian);
@@ -199,6 +353,7 @@ pub fn find_folds_with(
             );
         }
     }
+    control.report(1.0)?;
     Ok(report)
 }
 
@@ -376,10 +531,20 @@ struct Sample {
     bend: bool,
 }
 
+/// What one face may still sample, and where it polls.
+struct Room<'a> {
+    limits: &'a Limits<'a>,
+    /// Evaluations of the call before this face.
+    made: u64,
+    /// The call's fraction at this face.
+    fraction: f64,
+}
+
 /// The check of one Ptex face, on an integer lattice of `m + 1` points per edge, where
 /// `m = (samples_per_edge - 1) · 2^adaptive_depth`, point `(i, j)` at `(i/m, j/m)`.
 struct FaceCheck<'a> {
     ev: &'a Evaluator,
+    room: Room<'a>,
     face: u32,
     shape: FaceShape,
     m: u32,
@@ -402,11 +567,13 @@ impl<'a> FaceCheck<'a> {
         face: u32,
         shape: FaceShape,
         s: &FoldSettings,
+        room: Room<'a>,
     ) -> Result<FaceCheck<'a>> {
         let n = s.samples_per_edge as u32;
         let step = 1u32 << s.adaptive_depth;
         let mut fc = FaceCheck {
             ev,
+            room,
             face,
             shape,
             m: (n - 1) * step,
@@ -466,6 +633,14 @@ impl<'a> FaceCheck<'a> {
     fn sample(&mut self, i: u32, j: u32) -> Result<Sample> {
         if let Some(&s) = self.cache.get(&(i, j)) {
             return Ok(s);
+        }
+        let limits = self.room.limits;
+        let made = self.room.made + self.samples as u64;
+        if made >= limits.total || self.samples >= limits.per_face {
+            return Err(limits.refuse(self.face, made, self.samples));
+        }
+        if self.samples > 0 && self.samples % FACE_POLL == 0 {
+            limits.control.report(self.room.fraction)?;
         }
         let m = self.m;
         let (mut u, mut v) = (f64::from(i) / f64::from(m), f64::from(j) / f64::from(m));

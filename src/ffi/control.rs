@@ -37,8 +37,9 @@ impl Progress for CProgress {
 
 /// Set the progress callback of the work done with `options`: every construction
 /// (`profsubd_profile_build`, `profsubd_revolve`, `profsubd_sweep`, ...: the fit and its
-/// stages, BiCGSTAB iterations, dense LU columns), `profsubd_evaluator_new` (each face) and
-/// `profsubd_refine_uniform` (each level). It is called on the calling thread at the start,
+/// stages, BiCGSTAB iterations, dense LU columns), `profsubd_evaluator_new` (its setup, each
+/// face, its positions), `profsubd_refine_uniform` (each level) and
+/// `profsubd_check_folds_with_options` (each face). It is called on the calling thread at the start,
 /// regularly (at most about a thousand times per stage) and at the end of the work; when it
 /// returns non-zero the call stops within one step and returns `PROFSUBD_ERROR_CANCELLED`,
 /// its outputs untouched and nothing leaked. `callback` NULL removes it. Calls sharing the
@@ -66,7 +67,7 @@ pub unsafe extern "C" fn profsubd_options_set_progress(
 }
 
 /// Set the memory budget of the work done with `options` (constructions, evaluator build,
-/// refinement), in bytes; 0 (the default) for none. A call estimates its largest
+/// refinement, `profsubd_check_folds_with_options`), in bytes; 0 (the default) for none. A call estimates its largest
 /// allocations from its sizes before making them and returns
 /// `PROFSUBD_ERROR_LIMIT_EXCEEDED` when the estimate is above the budget (the message gives
 /// both figures).

@@ -1,11 +1,13 @@
-//! The fold check through the C ABI: `profsubd_check_folds` samples an evaluator's limit
-//! surface and returns a fold-report handle with a summary getter and a copy-out of the
+//! The fold check through the C ABI: `profsubd_check_folds` (and
+//! `profsubd_check_folds_with_options`, with progress, cancellation and a memory budget)
+//! samples an evaluator's limit surface and returns a fold-report handle with a summary getter and a copy-out of the
 //! folded faces (the criterion is [`crate::eval::folds`]'s).
 
-use crate::eval::folds::{find_folds, FoldReport, FoldSettings};
+use crate::eval::folds::{find_folds_with, FoldReport, FoldSettings};
 use crate::ffi::error::{FfiError, FfiResult};
 use crate::ffi::evaluator::profsubd_evaluator;
 use crate::ffi::handle::{self, Handle};
+use crate::ffi::options::{options_or_default, profsubd_options};
 use crate::ffi::panic::{guard, status_call};
 use crate::ffi::ptr::{arg_out, copy_slice};
 use crate::ffi::status::profsubd_status;
@@ -76,19 +78,44 @@ unsafe fn settings_arg(p: *const profsubd_fold_settings) -> FfiResult<FoldSettin
 /// is more than 90 degrees from its parametric face's mean normal, or a normal that jumps by
 /// more than 90 degrees across a cell of the finest sampling lattice; creases and corners,
 /// where the normal jumps between faces, are not folds (see the README, "Surface validity").
-/// `settings` may be NULL (defaults). Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for settings
-/// out of range.
+/// `settings` may be NULL (defaults). The work is bounded: at most 2^26 limit evaluations
+/// in all (the base lattices, faces x `samples_per_edge`^2, are checked against it before any
+/// evaluation; the adaptive halving as it samples) and 2^21 samples in one face
+/// (`profsubd_check_folds_with_options` adds progress, cancellation and a memory budget).
+/// Errors: `PROFSUBD_ERROR_INVALID_ARGUMENT` for settings out of range;
+/// `PROFSUBD_ERROR_LIMIT_EXCEEDED` above those ceilings (the message names the figures and
+/// the face). `*out` is untouched on error.
 #[no_mangle]
 pub unsafe extern "C" fn profsubd_check_folds(
     evaluator: *const profsubd_evaluator,
     settings: *const profsubd_fold_settings,
     out: *mut *mut profsubd_fold_report,
 ) -> profsubd_status {
+    profsubd_check_folds_with_options(evaluator, settings, std::ptr::null(), out)
+}
+
+/// `profsubd_check_folds` with the progress callback and memory budget of `options` (NULL:
+/// neither; its other settings do not apply): the callback is called through the mesh's base
+/// level, at each parametric face and every 16,384 samples inside one, and a non-zero return
+/// stops the check with `PROFSUBD_ERROR_CANCELLED`; the check is refused with
+/// `PROFSUBD_ERROR_LIMIT_EXCEEDED` before any evaluation when its estimated memory (about 64
+/// bytes per face-vertex index of the mesh plus 160 bytes per sample of one face's base
+/// lattice) is above the budget, and when the adaptive halving of one face would pass it.
+/// Errors: those of `profsubd_check_folds`; `PROFSUBD_ERROR_INVALID_HANDLE` for `options`.
+/// `*out` is untouched on error.
+#[no_mangle]
+pub unsafe extern "C" fn profsubd_check_folds_with_options(
+    evaluator: *const profsubd_evaluator,
+    settings: *const profsubd_fold_settings,
+    options: *const profsubd_options,
+    out: *mut *mut profsubd_fold_report,
+) -> profsubd_status {
     status_call(|| {
         let ev = handle::borrow::<profsubd_evaluator>(evaluator, "evaluator")?;
         let s = settings_arg(settings)?;
+        let o = options_or_default(options)?;
         let out = arg_out(out, "out")?;
-        let report = find_folds(ev, &s)?;
+        let report = find_folds_with(ev, &s, &o.settings.control)?;
         out.write(handle::into_raw(report));
         Ok(())
     })

@@ -4,7 +4,7 @@
 use crate::math;
 use glam::DVec3;
 
-use super::{find_folds, FoldSettings};
+use super::{find_folds, find_folds_with, FoldSettings};
 use crate::error::Error;
 use crate::eval::Evaluator;
 use crate::mesh::{Corner, Crease, Mesh, MeshParts, SHARPNESS_INFINITE};
@@ -207,4 +207,64 @@ fn holes_are_skipped_and_bad_settings_are_refused() {
             Err(Error::InvalidArgument(_))
         ));
     }
+}
+
+/// The running ceilings: a check allowed exactly the evaluations it makes passes with the
+/// same report; one fewer stops in the adaptive halving (the base lattices fit) with a
+/// message naming the face and figures; a memory budget that holds the base lattice of one
+/// face but not its halving stops there with both figures; the polls report 0 to 1.
+#[test]
+fn running_ceilings_stop_the_adaptive_halving() {
+    use super::{check_folds, fold_check_bytes, SAMPLE_BYTES};
+    use crate::control::Control;
+    let mesh = Mesh::from_parts(pushed_grid(2.3)).unwrap();
+    let ev = Evaluator::new(&mesh, &SubdivOptions::default()).unwrap();
+    let s = FoldSettings::default();
+    let full = find_folds(&ev, &s).unwrap();
+    let made = full.samples as u64;
+    assert!(made > 64 * 81, "{made}: some halving");
+    assert_eq!(check_folds(&ev, &s, &Control::NONE, made).unwrap(), full);
+    match check_folds(&ev, &s, &Control::NONE, made - 1) {
+        Err(Error::LimitExceeded(m)) => assert!(
+            m.contains(&format!(
+                "reached its limit of {} limit evaluations",
+                made - 1
+            )) && m.contains("64 faces at 9 × 9 samples, take 5184"),
+            "{m}"
+        ),
+        other => panic!("{:?}", other.map(|r| r.samples)),
+    }
+    // Room for one face's base lattice and 10 more samples: the faces at the pushed vertex
+    // halve further.
+    let budget = fold_check_bytes(&ev, 9) + 10 * SAMPLE_BYTES;
+    let control = Control::NONE.with_memory_budget(Some(budget));
+    match find_folds_with(&ev, &s, &control) {
+        Err(Error::LimitExceeded(m)) => assert!(
+            m.contains("the fold check's samples of parametric face")
+                && m.contains(&format!("above the memory budget of {budget} bytes")),
+            "{m}"
+        ),
+        other => panic!("{:?}", other.map(|r| r.samples)),
+    }
+    match find_folds_with(
+        &ev,
+        &s,
+        &Control::NONE.with_memory_budget(Some(budget - 11 * SAMPLE_BYTES)),
+    ) {
+        Err(Error::LimitExceeded(m)) => assert!(
+            m.contains("the fold check of 64 parametric faces at 9 × 9 samples needs about"),
+            "{m}"
+        ),
+        other => panic!("{:?}", other.map(|r| r.samples)),
+    }
+    let seen = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+    let log = seen.clone();
+    let control = Control::NONE.with_progress(move |f: f64| {
+        log.lock().unwrap().push(f);
+        false
+    });
+    assert_eq!(find_folds_with(&ev, &s, &control).unwrap(), full);
+    let f = seen.lock().unwrap().clone();
+    assert_eq!((f[0], *f.last().unwrap()), (0.0, 1.0));
+    assert!(f.windows(2).all(|w| w[0] <= w[1]) && f.iter().any(|&x| x > 0.0 && x < 1.0));
 }

@@ -3,6 +3,7 @@
 use std::ptr::{null, null_mut};
 
 use super::*;
+use crate::eval::folds::find_folds;
 use crate::ffi::error::last_error;
 use crate::ffi::evaluator::{profsubd_evaluator_free, profsubd_evaluator_new};
 use crate::ffi::mesh::{new_mesh_handle, profsubd_mesh_free};

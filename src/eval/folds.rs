@@ -219,10 +219,9 @@ fn level_bytes(evaluator: &Evaluator) -> u64 {
 struct Limits<'c> {
     /// Most evaluations of the call.
     total: u64,
-    /// Most samples of one face: [`MAX_FACE_SAMPLES`], or fewer under the memory budget.
+    /// Most samples of one face: [`MAX_FACE_SAMPLES`], or fewer under the memory budget
+    /// (then the budget is what stops a face).
     per_face: usize,
-    /// Whether `per_face` comes from the memory budget.
-    budgeted: bool,
     level_bytes: u64,
     control: &'c Control,
     faces: u64,
@@ -261,7 +260,6 @@ impl<'c> Limits<'c> {
         Ok(Limits {
             total,
             per_face: by_budget.map_or(MAX_FACE_SAMPLES, |b| b.min(MAX_FACE_SAMPLES)),
-            budgeted: by_budget.is_some_and(|b| b < MAX_FACE_SAMPLES),
             level_bytes,
             control,
             faces,
@@ -284,7 +282,7 @@ impl<'c> Limits<'c> {
                 self.faces * (n as u64).pow(2)
             ));
         }
-        if self.budgeted {
+        if self.per_face < MAX_FACE_SAMPLES {
             let what = format!("the fold check's samples of parametric face {ptex}");
             let bytes = self.level_bytes + SAMPLE_BYTES * (in_face as u64 + 1);
             if let Err(e) = self.control.check_memory(&what, bytes) {

@@ -86,13 +86,9 @@ pub(crate) fn limit_stencils_with(
     let parts = super::parallel::map_ranges(mesh.num_vertices(), control.threads(), |range| {
         let mut table = StencilTable::new();
         let mut row = Vec::new();
-        let (reporter, start, len) = (
-            (range.start == 0).then_some(control),
-            range.start,
-            range.len(),
-        );
-        for v in range {
-            poll.step(reporter, v - start, len)?;
+        let (reporter, len) = ((range.start == 0).then_some(control), range.len());
+        for (k, v) in range.enumerate() {
+            poll.step(reporter, k, len)?;
             if !surface[v] {
                 table.push_row([]);
                 continue;
